@@ -1,0 +1,43 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Small value types and robust circle primitives.
+#pragma once
+
+#include <array>
+#include <cmath>
+
+namespace disktune {
+
+// Trivially constructible, so arrays of it cost nothing to declare in hot loops:
+// `Vec2 v;` is uninitialised, `Vec2{}` is zero.
+struct Vec2 {
+  double x, y;
+  Vec2() = default;
+  constexpr Vec2(double x_, double y_) : x(x_), y(y_) {}
+  Vec2 operator+(Vec2 o) const { return {x + o.x, y + o.y}; }
+  Vec2 operator-(Vec2 o) const { return {x - o.x, y - o.y}; }
+  Vec2 operator*(double s) const { return {x * s, y * s}; }
+  Vec2& operator+=(Vec2 o) { x += o.x; y += o.y; return *this; }
+  Vec2& operator-=(Vec2 o) { x -= o.x; y -= o.y; return *this; }
+  bool operator==(Vec2 o) const { return x == o.x && y == o.y; }
+};
+
+inline double dot(Vec2 a, Vec2 b) { return a.x * b.x + a.y * b.y; }
+inline double squared_norm(Vec2 a) { return dot(a, a); }
+inline double norm(Vec2 a) { return std::sqrt(dot(a, a)); }
+inline double squared_distance(Vec2 a, Vec2 b) { return squared_norm(a - b); }
+inline double distance(Vec2 a, Vec2 b) { return norm(a - b); }
+inline Vec2 perp(Vec2 a) { return {-a.y, a.x}; }
+
+/// Intersection points of two circles. `count` is 0 (disjoint, nested or concentric),
+/// 1 (tangent, also when rounding makes near-tangent circles miss by a hair) or 2.
+struct CircleIntersection {
+  int count = 0;
+  std::array<Vec2, 2> points;
+};
+
+/// Midpoint-plus-perpendicular form, valid for unequal radii. The squared half-chord is
+/// clamped at zero when it is negative by no more than rounding, so near-tangent circles
+/// give their touching point instead of nothing or NaN.
+CircleIntersection intersect_circles(Vec2 c1, double r1, Vec2 c2, double r2);
+
+}  // namespace disktune

@@ -1,0 +1,39 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Files in and out. Every writer goes through a temporary file renamed into place, so
+// a failed write never leaves a half-written output behind.
+#pragma once
+
+#include <functional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "disktune/packing.h"
+
+namespace disktune {
+
+/// Writes `path` by calling `write` on a temporary sibling file, then renaming it into
+/// place. Throws IoError (naming the path and the reason) and removes the temporary on
+/// any failure, including an exception thrown by `write`.
+void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& write);
+
+/// CSV with header `x,y,r`, one live disk a line in id order, each number in the
+/// shortest form that reads back to the same double.
+void write_points_csv(const std::string& path, const Packing& packing);
+
+struct PointRecord {
+  double x, y, r;
+};
+/// Reads a CSV written by write_points_csv (header `x,y,r`). Throws IoError when the
+/// file cannot be read and InvalidInput, naming the line, when its content is wrong.
+std::vector<PointRecord> read_points_csv(const std::string& path);
+
+struct SvgStyle {
+  double pixels = 800;  ///< width of the picture in pixels
+};
+/// The packing as an SVG picture: each disk drawn at half its radius (so the disks do
+/// not overlap), periodic images where they cross the frame, fixed and frozen disks in
+/// their own colors.
+void write_packing_svg(const std::string& path, const Packing& packing, const SvgStyle& style = {});
+
+}  // namespace disktune

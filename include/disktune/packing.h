@@ -1,0 +1,82 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// A packing: disks (center, radius, flags) in a Frame, with a spatial grid for O(1)
+// insert, remove, move and neighbour queries. The packing owns the conflict and
+// coverage rules; it does not enforce them on every edit (algorithms move through
+// states they have already checked), but offers the checks.
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <utility>
+#include <vector>
+
+#include "disktune/frame.h"
+#include "disktune/geometry.h"
+#include "disktune/spatial_grid.h"
+#include "disktune/tolerance.h"
+
+namespace disktune {
+
+inline constexpr DiskId kNoDisk = std::numeric_limits<DiskId>::max();
+
+/// Per-disk flags: fixed disks (boundary samples) never move; frozen disks belong to
+/// a growing crystal.
+enum DiskFlags : std::uint8_t { kFixed = 1, kFrozen = 2 };
+
+class Packing {
+ public:
+  /// `max_radius` bounds every radius ever inserted; it sizes the grid cells.
+  Packing(const Frame& frame, double max_radius);
+
+  /// Adds a disk and returns its id. Ids are stable until the disk is removed, and a
+  /// removed id may be reused by a later insert.
+  DiskId insert(Vec2 center, double radius, std::uint8_t flags = 0);
+  void remove(DiskId id);
+  void move(DiskId id, Vec2 center);
+
+  bool alive(DiskId id) const { return id < radius_.size() && radius_[id] > 0; }
+  Vec2 center(DiskId id) const { return center_[id]; }
+  double radius(DiskId id) const { return radius_[id]; }
+  std::uint8_t flags(DiskId id) const { return flags_[id]; }
+  void set_flags(DiskId id, std::uint8_t f) { flags_[id] = f; }
+
+  /// Number of live disks.
+  std::size_t size() const { return live_; }
+  bool empty() const { return live_ == 0; }
+  /// Every live id is below this bound.
+  DiskId id_bound() const { return static_cast<DiskId>(radius_.size()); }
+  /// Live ids in increasing order.
+  std::vector<DiskId> ids() const;
+
+  const Frame& frame() const { return grid_.frame(); }
+  double max_radius() const { return max_radius_; }
+
+  /// f(const Neighbor&) for every image of every disk whose center is within R of q.
+  template <class F>
+  void for_each_near(Vec2 q, double R, F&& f) const {
+    grid_.for_each_near(q, R, std::forward<F>(f));
+  }
+  /// True, stopping early, when pred(const Neighbor&) holds for some image within R of q.
+  template <class Pred>
+  bool any_near(Vec2 q, double R, Pred&& pred) const {
+    return grid_.any_near(q, R, std::forward<Pred>(pred));
+  }
+
+  /// True when a new center at `q` would lie strictly inside an existing disk (other
+  /// than `ignore`): the prior-disk conflict rule, which for a uniform radius is
+  /// "closer than r to another center".
+  bool conflicts(Vec2 q, DiskId ignore = kNoDisk) const;
+  /// True when `q` lies in some disk other than `ignore` (closed disks, tolerance).
+  bool covered(Vec2 q, DiskId ignore = kNoDisk) const;
+
+ private:
+  SpatialGrid grid_;
+  double max_radius_;
+  std::vector<Vec2> center_;
+  std::vector<double> radius_;  // 0 marks a free id
+  std::vector<std::uint8_t> flags_;
+  std::vector<DiskId> free_ids_;
+  std::size_t live_ = 0;
+};
+
+}  // namespace disktune

@@ -1,0 +1,37 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Maximal Poisson-disk sampling (MPS).
+#pragma once
+
+#include <cstddef>
+
+#include "disktune/packing.h"
+#include "disktune/periodic_box.h"
+#include "disktune/random.h"
+
+namespace disktune {
+
+struct MpsOptions {
+  /// Darts per active cell at each level of the dart-throwing phase.
+  double darts_per_active_cell = 1.0;
+  /// Refinement levels of the dart phase: each splits the active cells in four and
+  /// drops the children one disk covers. Exact void filling finishes the job.
+  int levels = 4;
+};
+
+struct MpsStats {
+  std::size_t darts = 0;         // darts thrown in the dart phase
+  std::size_t dart_disks = 0;    // disks accepted in the dart phase
+  std::size_t void_cells = 0;    // cells left active after the dart levels
+  std::size_t void_disks = 0;    // disks added by exact void elimination
+  int levels = 0;               // dart levels run
+};
+
+/// A maximal Poisson-disk sample of the periodic box with uniform radius r: unbiased
+/// dart throwing on a refining background grid (every accepted dart is uniform over
+/// the uncovered area), then exact void elimination in the cells still active.
+/// Conflict-free and maximal up to kRelTol; ids follow a spatial order. The same seed
+/// gives the same sample. Throws InvalidInput for a bad radius.
+Packing sample_mps(const PeriodicBox& box, double r, Rng& rng, const MpsOptions& options = {},
+                   MpsStats* stats = nullptr);
+
+}  // namespace disktune

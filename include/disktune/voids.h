@@ -1,0 +1,39 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Planar void corners: the uncovered intersection points of disk boundaries. A void
+// (the uncovered region) is an arc-gon; its vertices are corners. The union of closed
+// disks covers the domain exactly when no corner is uncovered and no circle is
+// isolated, so corners are both how voids are found and how maximality is certified.
+#pragma once
+
+#include <vector>
+
+#include "disktune/geometry.h"
+#include "disktune/packing.h"
+
+namespace disktune {
+
+/// An intersection point of the boundaries of disks `a` and `b` that no other disk
+/// covers. `point` is in the unwrapped frame of the query that produced it. On an
+/// isolated circle (no other circle meets it) a single point of it is reported, with
+/// `b == kNoDisk`.
+struct Corner {
+  Vec2 point;
+  DiskId a;
+  DiskId b;
+};
+
+/// Appends to `out` the uncovered corners on the boundary of disk `p`: where the void
+/// next to p, if any, touches p. Empty exactly when p's circle is covered by others.
+void corners_on_circle(const Packing& packing, DiskId p, std::vector<Corner>& out);
+
+/// Appends to `out` the uncovered corners inside the closed disk D(center, R), treating
+/// the disks in `ignore` as absent (e.g. a disk just lifted to compute its void).
+/// `center` may be given in any unwrapped frame; corners come in that frame.
+void corners_in_region(const Packing& packing, Vec2 center, double R,
+                       const std::vector<DiskId>& ignore, std::vector<Corner>& out);
+
+/// True when no corner of the whole packing is uncovered and no circle is isolated:
+/// the packing is maximal (up to the tolerance). Linear time.
+bool is_maximal(const Packing& packing);
+
+}  // namespace disktune

@@ -1,0 +1,43 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The `disktune` command: a thin front door over the library. Each subcommand maps its
+// flags onto library calls; errors become one clear line and a distinct exit code.
+#include <CLI/CLI.hpp>
+#include <iostream>
+
+#include "commands.h"
+#include "disktune/errors.h"
+
+int main(int argc, char** argv) {
+  using namespace disktune::cli;
+  CLI::App app{
+      "disktune: maximal Poisson-disk packings whose density is tuned by disk injection and "
+      "ejection.\nWith no arguments, runs the built-in demo (writes disktune-demo/)."};
+  app.require_subcommand(0, 1);
+  SampleArgs sample;
+  add_sample_command(app, sample);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::cerr << "disktune: " << e.what() << "\nRun 'disktune --help' for the options.\n";
+    return kExitUsage;
+  }
+
+  try {
+    if (app.got_subcommand("sample")) return run_sample(sample);
+    return run_demo();
+  } catch (const disktune::InvalidInput& e) {
+    std::cerr << "disktune: error: " << e.what() << "\n";
+    return kExitUsage;
+  } catch (const disktune::IoError& e) {
+    std::cerr << "disktune: error: " << e.what() << "\n";
+    return kExitIo;
+  } catch (const std::exception& e) {
+    std::cerr << "disktune: internal error: " << e.what() << "\n";
+    return kExitInternal;
+  }
+}

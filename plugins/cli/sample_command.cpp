@@ -1,0 +1,75 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+
+#include "commands.h"
+#include "disktune/density.h"
+#include "disktune/errors.h"
+#include "disktune/io.h"
+#include "disktune/sampling.h"
+
+namespace disktune::cli {
+
+void add_sample_command(CLI::App& app, SampleArgs& args) {
+  CLI::App* cmd = app.add_subcommand(
+      "sample", "Make a maximal Poisson-disk sample (MPS) and write it as CSV (x,y,r).");
+  cmd->add_option("--domain", args.domain, "Domain kind; only 'periodic' (a periodic box) for now")
+      ->check(CLI::IsMember({"periodic"}))
+      ->capture_default_str();
+  cmd->add_option("--width", args.width, "Width W of the periodic box")->capture_default_str();
+  cmd->add_option("--height", args.height, "Height H of the periodic box")->capture_default_str();
+  cmd->add_option("--radius,-r", args.radius,
+                  "Conflict radius r: no center closer than r to another; every point within r "
+                  "of a center. Needs 0 < r < min(W,H)/2")
+      ->required();
+  cmd->add_option("--seed", args.seed, "Random seed; the same seed gives the same output")
+      ->capture_default_str();
+  cmd->add_option("--output,-o", args.output, "CSV file to write (header x,y,r)");
+  cmd->add_option("--svg", args.svg, "Also draw the packing as an SVG picture");
+}
+
+namespace {
+
+// Checks that an output path's folder exists before any work is done, so a typo costs
+// no minutes of sampling.
+void check_output_folder(const std::string& path) {
+  if (path.empty()) return;
+  const std::filesystem::path parent = std::filesystem::path(path).parent_path();
+  if (!parent.empty() && !std::filesystem::is_directory(parent)) {
+    throw IoError("cannot write '" + path + "': folder '" + parent.string() + "' does not exist");
+  }
+}
+
+}  // namespace
+
+int run_sample(const SampleArgs& args) {
+  check_output_folder(args.output);
+  check_output_folder(args.svg);
+  const PeriodicBox box(args.width, args.height);
+  box.validate_radius(args.radius);
+  Rng rng(args.seed);
+  const auto t0 = std::chrono::steady_clock::now();
+  const Packing packing = sample_mps(box, args.radius, rng);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (!args.output.empty()) write_points_csv(args.output, packing);
+  if (!args.svg.empty()) write_packing_svg(args.svg, packing);
+  std::printf("sample: %zu disks, eta = %.4f, rho = %.4f, %.3f s (r = %g, %g x %g periodic box)%s%s\n",
+              packing.size(), area_fraction(packing.size(), args.radius, box.area()),
+              relative_radius(packing.size(), args.radius, box.area()), seconds, args.radius,
+              box.width(), box.height(), args.output.empty() ? "" : " -> ",
+              args.output.c_str());
+  return kExitOk;
+}
+
+int run_demo() {
+  std::filesystem::create_directories("disktune-demo");
+  SampleArgs args;
+  args.radius = 0.01;
+  args.output = "disktune-demo/mps.csv";
+  args.svg = "disktune-demo/mps.svg";
+  std::printf("disktune demo: MPS of the unit periodic square at r = 0.01 (see disktune --help)\n");
+  return run_sample(args);
+}
+
+}  // namespace disktune::cli

@@ -1,0 +1,84 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "disktune/errors.h"
+#include "disktune/io.h"
+
+namespace disktune {
+namespace {
+
+// Shortest decimal form that reads back to the same double (std::to_chars).
+void put_number(std::ostream& out, double v) {
+  char buf[32];
+  const auto res = std::to_chars(buf, buf + sizeof buf, v);
+  out.write(buf, res.ptr - buf);
+}
+
+std::string trim(const std::string& s) {
+  const auto b = s.find_first_not_of(" \t\r");
+  if (b == std::string::npos) return "";
+  const auto e = s.find_last_not_of(" \t\r");
+  return s.substr(b, e - b + 1);
+}
+
+}  // namespace
+
+void write_points_csv(const std::string& path, const Packing& packing) {
+  write_file_atomically(path, [&](std::ostream& out) {
+    out << "x,y,r\n";
+    for (DiskId id = 0; id < packing.id_bound(); ++id) {
+      if (!packing.alive(id)) continue;
+      const Vec2 c = packing.center(id);
+      put_number(out, c.x);
+      out << ',';
+      put_number(out, c.y);
+      out << ',';
+      put_number(out, packing.radius(id));
+      out << '\n';
+    }
+  });
+}
+
+std::vector<PointRecord> read_points_csv(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw IoError("cannot read '" + path + "': no such file or not readable");
+  std::vector<PointRecord> out;
+  std::string line;
+  std::size_t lineno = 0;
+  auto fail = [&](const std::string& what) {
+    std::ostringstream msg;
+    msg << path << ":" << lineno << ": " << what;
+    throw InvalidInput(msg.str());
+  };
+  ++lineno;
+  if (!std::getline(in, line)) fail("empty file; expected the header 'x,y,r'");
+  if (trim(line) != "x,y,r") fail("expected the header 'x,y,r', found '" + trim(line) + "'");
+  while (std::getline(in, line)) {
+    ++lineno;
+    const std::string t = trim(line);
+    if (t.empty()) continue;
+    double v[3];
+    const char* p = t.data();
+    const char* end = t.data() + t.size();
+    for (int k = 0; k < 3; ++k) {
+      const auto res = std::from_chars(p, end, v[k]);
+      if (res.ec != std::errc() || !std::isfinite(v[k])) {
+        fail("expected three finite numbers 'x,y,r', found '" + t + "'");
+      }
+      p = res.ptr;
+      if (k < 2) {
+        if (p == end || *p != ',') fail("expected three comma-separated numbers, found '" + t + "'");
+        ++p;
+      }
+    }
+    if (p != end) fail("unexpected text after the third number in '" + t + "'");
+    if (!(v[2] > 0)) fail("radius must be positive, found '" + t + "'");
+    out.push_back({v[0], v[1], v[2]});
+  }
+  return out;
+}
+
+}  // namespace disktune

@@ -1,0 +1,72 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "disktune/packing.h"
+
+#include <cassert>
+#include <cmath>
+
+namespace disktune {
+
+// Cells of a diagonal just below r_max hold one disk each in a uniform packing.
+Packing::Packing(const Frame& frame, double max_radius)
+    : grid_(frame, max_radius * 0.70710678118654752 * (1 - 1e-6)), max_radius_(max_radius) {}
+
+DiskId Packing::insert(Vec2 center, double radius, std::uint8_t flags) {
+  assert(radius > 0 && radius <= max_radius_);
+  center = frame().wrap(center);
+  DiskId id;
+  if (!free_ids_.empty()) {
+    id = free_ids_.back();
+    free_ids_.pop_back();
+    center_[id] = center;
+    radius_[id] = radius;
+    flags_[id] = flags;
+  } else {
+    id = static_cast<DiskId>(radius_.size());
+    center_.push_back(center);
+    radius_.push_back(radius);
+    flags_.push_back(flags);
+  }
+  grid_.insert(id, center, radius);
+  ++live_;
+  return id;
+}
+
+void Packing::remove(DiskId id) {
+  assert(alive(id));
+  grid_.remove(id, center_[id]);
+  radius_[id] = 0;
+  flags_[id] = 0;
+  free_ids_.push_back(id);
+  --live_;
+}
+
+void Packing::move(DiskId id, Vec2 center) {
+  assert(alive(id));
+  center = frame().wrap(center);
+  grid_.remove(id, center_[id]);
+  center_[id] = center;
+  grid_.insert(id, center, radius_[id]);
+}
+
+std::vector<DiskId> Packing::ids() const {
+  std::vector<DiskId> out;
+  out.reserve(live_);
+  for (DiskId id = 0; id < id_bound(); ++id) {
+    if (alive(id)) out.push_back(id);
+  }
+  return out;
+}
+
+bool Packing::conflicts(Vec2 q, DiskId ignore) const {
+  return any_near(q, max_radius_, [&](const Neighbor& n) {
+    return n.id != ignore && is_conflict(n.d2, n.radius);
+  });
+}
+
+bool Packing::covered(Vec2 q, DiskId ignore) const {
+  return any_near(q, max_radius_ * (1 + kRelTol), [&](const Neighbor& n) {
+    return n.id != ignore && is_covered(n.d2, n.radius);
+  });
+}
+
+}  // namespace disktune

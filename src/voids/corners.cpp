@@ -1,0 +1,86 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <algorithm>
+
+#include "disktune/voids.h"
+
+namespace disktune {
+namespace {
+
+// True when some disk of `near` other than indices i and j covers `x`. Other images of
+// the same disks do count: they are other disks as far as covering goes.
+bool covered_by_others(const std::vector<Neighbor>& near, Vec2 x, std::size_t i, std::size_t j) {
+  for (std::size_t k = 0; k < near.size(); ++k) {
+    if (k != i && k != j && is_covered(squared_distance(x, near[k].image), near[k].radius)) {
+      return true;
+    }
+  }
+  return false;
+}
+
+bool contains(const std::vector<DiskId>& ids, DiskId id) {
+  return std::find(ids.begin(), ids.end(), id) != ids.end();
+}
+
+}  // namespace
+
+void corners_on_circle(const Packing& packing, DiskId p, std::vector<Corner>& out) {
+  const Vec2 c = packing.center(p);
+  const double r = packing.radius(p);
+  // Only disks within r + r_max can meet p's circle or cover a point of it.
+  std::vector<Neighbor> near;
+  near.reserve(24);
+  packing.for_each_near(c, (r + packing.max_radius()) * (1 + 2 * kRelTol), [&](const Neighbor& n) {
+    if (!(n.id == p && n.d2 == 0.0)) near.push_back(n);
+  });
+  const std::size_t none = near.size();  // p is not in `near`: index "none" stands for it
+  bool met = false;
+  for (std::size_t i = 0; i < near.size(); ++i) {
+    const CircleIntersection x = intersect_circles(c, r, near[i].image, near[i].radius);
+    met = met || x.count > 0;
+    for (int k = 0; k < x.count; ++k) {
+      if (!covered_by_others(near, x.points[k], i, none)) {
+        out.push_back({x.points[k], p, near[i].id});
+      }
+    }
+  }
+  if (!met) {
+    const Vec2 probe = c + Vec2{r, 0};
+    if (!covered_by_others(near, probe, none, none)) out.push_back({probe, p, kNoDisk});
+  }
+}
+
+void corners_in_region(const Packing& packing, Vec2 center, double R,
+                       const std::vector<DiskId>& ignore, std::vector<Corner>& out) {
+  std::vector<Neighbor> near;
+  near.reserve(32);
+  const double rmax = packing.max_radius();
+  packing.for_each_near(center, (R + rmax) * (1 + 2 * kRelTol), [&](const Neighbor& n) {
+    if (!contains(ignore, n.id)) near.push_back(n);
+  });
+  const double lim = R * (1 + kRelTol);
+  for (std::size_t i = 0; i < near.size(); ++i) {
+    for (std::size_t j = i + 1; j < near.size(); ++j) {
+      const CircleIntersection x =
+          intersect_circles(near[i].image, near[i].radius, near[j].image, near[j].radius);
+      for (int k = 0; k < x.count; ++k) {
+        const Vec2 pt = x.points[k];
+        if (squared_distance(pt, center) <= lim * lim && !covered_by_others(near, pt, i, j)) {
+          out.push_back({pt, near[i].id, near[j].id});
+        }
+      }
+    }
+  }
+}
+
+bool is_maximal(const Packing& packing) {
+  if (packing.empty()) return false;
+  std::vector<Corner> corners;
+  for (DiskId id = 0; id < packing.id_bound(); ++id) {
+    if (!packing.alive(id)) continue;
+    corners_on_circle(packing, id, corners);
+    if (!corners.empty()) return false;
+  }
+  return true;
+}
+
+}  // namespace disktune

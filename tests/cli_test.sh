@@ -1,0 +1,65 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
+# The `disktune` command end to end: outputs, exit codes, messages, no partial files.
+set -u
+bin="$1"
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work"
+fails=0
+pass=0
+expect() {  # expect NAME WANTED_EXIT PATTERN -- command...
+  local name=$1 want=$2 pattern=$3
+  shift 4
+  local out rc
+  out=$("$@" 2>&1)
+  rc=$?
+  if [ "$rc" -ne "$want" ] || ! grep -qE -- "$pattern" <<<"$out"; then
+    echo "FAIL $name: exit $rc (wanted $want), output:"
+    echo "$out" | sed 's/^/    /'
+    fails=$((fails + 1))
+  else
+    pass=$((pass + 1))
+  fi
+}
+absent() {  # absent NAME FILE
+  if [ -e "$2" ] || ls "$2".tmp* >/dev/null 2>&1; then
+    echo "FAIL $1: $2 (or a temporary) exists"
+    fails=$((fails + 1))
+  else
+    pass=$((pass + 1))
+  fi
+}
+
+expect help 0 "sample" -- "$bin" --help
+expect sample-help 0 "--radius" -- "$bin" sample --help
+expect sample 0 "^sample: [0-9]+ disks, eta = 0\.5[0-9]+" -- "$bin" sample --radius 0.05 --seed 3 --output a.csv --svg a.svg
+head -n 1 a.csv | grep -qx "x,y,r" && pass=$((pass + 1)) || { echo "FAIL header"; fails=$((fails + 1)); }
+"$bin" sample --radius 0.05 --seed 3 --output b.csv >/dev/null
+cmp -s a.csv b.csv && pass=$((pass + 1)) || { echo "FAIL same seed, different bytes"; fails=$((fails + 1)); }
+expect rect 0 "2 x 0.5 periodic box" -- "$bin" sample --width 2 --height 0.5 --radius 0.1 --output c.csv
+
+expect zero-radius 2 "radius must be a finite positive number" -- "$bin" sample --radius 0 --output z.csv
+absent zero-radius-output z.csv
+expect nan-radius 2 "radius must be" -- "$bin" sample --radius nan --output z.csv
+expect big-radius 2 "meet its own periodic image" -- "$bin" sample --radius 0.5 --output z.csv
+absent big-radius-output z.csv
+expect bad-box 2 "width and height must be" -- "$bin" sample --width -1 --radius 0.1
+expect no-radius 2 "radius" -- "$bin" sample --output z.csv
+expect unknown-option 2 "--frobnicate|frobnicate" -- "$bin" sample --radius 0.1 --frobnicate
+expect unknown-command 2 "disktune --help" -- "$bin" sculpt
+expect bad-domain 2 "domain" -- "$bin" sample --domain sphere --radius 0.1
+expect bad-folder 3 "does not exist" -- "$bin" sample --radius 0.1 --output no/such/dir/z.csv
+mkdir ro && chmod 555 ro
+expect output-is-a-folder 3 "cannot write" -- "$bin" sample --radius 0.1 --output ro
+ls ro.tmp* >/dev/null 2>&1 && { echo "FAIL output-is-a-folder left a temporary"; fails=$((fails + 1)); } || pass=$((pass + 1))
+if [ "$(id -u)" -ne 0 ]; then  # root writes anywhere; the check means something only for users
+  expect unwritable 3 "cannot write" -- "$bin" sample --radius 0.1 --output ro/z.csv
+fi
+absent unwritable-output ro/z.csv
+
+expect demo 0 "sample: [0-9]+ disks" -- "$bin"
+[ -s disktune-demo/mps.csv ] && [ -s disktune-demo/mps.svg ] && pass=$((pass + 1)) || { echo "FAIL demo files"; fails=$((fails + 1)); }
+
+echo "$pass passed, $fails failed"
+[ "$fails" -eq 0 ]

@@ -1,0 +1,116 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "disktune/errors.h"
+#include "disktune/io.h"
+#include "disktune/sampling.h"
+
+namespace disktune {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct TempDir {
+  fs::path path = fs::temp_directory_path() /
+                  ("disktune_io_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
+                   "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+  TempDir() { fs::create_directories(path); }
+  ~TempDir() { fs::remove_all(path); }
+  std::string file(const std::string& name) const { return (path / name).string(); }
+};
+
+void write_text(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
+
+TEST(PointsCsv, RoundTripsEveryBit) {
+  TempDir dir;
+  const PeriodicBox box;
+  Rng rng(11);
+  const Packing p = sample_mps(box, 0.05, rng);
+  write_points_csv(dir.file("p.csv"), p);
+  const auto back = read_points_csv(dir.file("p.csv"));
+  ASSERT_EQ(back.size(), p.size());
+  std::size_t k = 0;
+  for (DiskId id : p.ids()) {
+    EXPECT_EQ(back[k].x, p.center(id).x);
+    EXPECT_EQ(back[k].y, p.center(id).y);
+    EXPECT_EQ(back[k].r, p.radius(id));
+    ++k;
+  }
+  std::ifstream in(dir.file("p.csv"));
+  std::string header;
+  std::getline(in, header);
+  EXPECT_EQ(header, "x,y,r");
+}
+
+TEST(PointsCsv, BadContentNamesTheLine) {
+  TempDir dir;
+  const std::pair<const char*, const char*> cases[] = {
+      {"", ":1:"},
+      {"a,b,c\n1,2,3\n", ":1: expected the header"},
+      {"x,y,r\n0.1,0.2,0.3\n0.1,oops,0.3\n", ":3:"},
+      {"x,y,r\n0.1,0.2\n", ":2:"},
+      {"x,y,r\n0.1,0.2,0.3,4\n", ":2:"},
+      {"x,y,r\n0.1,0.2,-1\n", ":2: radius must be positive"},
+      {"x,y,r\n0.1,nan,1\n", ":2:"},
+  };
+  for (const auto& [text, where] : cases) {
+    write_text(dir.file("bad.csv"), text);
+    try {
+      read_points_csv(dir.file("bad.csv"));
+      ADD_FAILURE() << "accepted: " << text;
+    } catch (const InvalidInput& e) {
+      EXPECT_NE(std::string(e.what()).find(where), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_THROW(read_points_csv(dir.file("missing.csv")), IoError);
+}
+
+TEST(AtomicWrite, FailureLeavesNoFileBehind) {
+  TempDir dir;
+  const std::string target = dir.file("out.csv");
+  EXPECT_THROW(write_file_atomically(target,
+                                     [](std::ostream& out) {
+                                       out << "half";
+                                       throw std::runtime_error("boom");
+                                     }),
+               std::runtime_error);
+  EXPECT_TRUE(fs::is_empty(dir.path)) << "a temporary or partial file was left";
+  EXPECT_THROW(write_file_atomically(dir.file("no/such/folder/x.csv"), [](std::ostream&) {}), IoError);
+  EXPECT_TRUE(fs::is_empty(dir.path));
+}
+
+TEST(AtomicWrite, ReplacesAnExistingFileWhole) {
+  TempDir dir;
+  const std::string target = dir.file("out.txt");
+  write_text(target, "old content that is longer");
+  write_file_atomically(target, [](std::ostream& out) { out << "new"; });
+  std::ifstream in(target);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  EXPECT_EQ(ss.str(), "new");
+}
+
+TEST(Svg, DrawsEveryDiskAndItsSeamImages) {
+  TempDir dir;
+  const PeriodicBox box;
+  Packing p(box.frame(), 0.1);
+  p.insert({0.5, 0.5}, 0.1);
+  p.insert({0.01, 0.99}, 0.1, kFixed);  // near a corner: drawn 4 times
+  write_packing_svg(dir.file("p.svg"), p);
+  std::ifstream in(dir.file("p.svg"));
+  std::stringstream ss;
+  ss << in.rdbuf();
+  const std::string svg = ss.str();
+  std::size_t circles = 0;
+  for (std::size_t at = svg.find("<circle"); at != std::string::npos; at = svg.find("<circle", at + 1)) ++circles;
+  EXPECT_EQ(circles, 5u);
+  EXPECT_NE(svg.find("#d62728"), std::string::npos);  // the fixed disk's color
+  EXPECT_NE(svg.find("</svg>"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace disktune

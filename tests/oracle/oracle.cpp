@@ -1,0 +1,348 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Why the maximality check is exact (up to tol).
+//
+// Let U be the union of the N > 0 closed disks (all periodic images) on the torus T.
+// A "corner" is an intersection point of two distinct circles (two disks, or a disk
+// and another image of itself); a circle is "isolated" if it meets no other circle.
+//
+// (a) If U != T, take an uncovered point and its component V of T \ U. V is open and
+//     V != T, so some circle C_i touches V. If C_i is isolated, step 3 reports it.
+//     Otherwise follow C_i along the boundary of V: the boundary arc ends where C_i
+//     enters another disk j, i.e. at a corner p of C_i and C_j (if C_j only touches
+//     C_i, p is the tangent point). p is in the closure of V, so p lies in the open
+//     interior of no other disk, and step 2 reports it unless a third circle passes
+//     exactly through p (the degenerate case below).
+// (b) If U == T, every corner p of C_i and C_j lies in a third closed disk: points
+//     just outside both disks near p are covered by the finitely many other closed
+//     disks, so one of them contains p. And no circle is isolated: equal disks cannot
+//     contain one another, so an isolated circle is ringed by uncovered points.
+//
+// So "N > 0, no isolated circle, every corner within a third disk" is equivalent to
+// "covered", except when a void corner lies exactly on a third circle (within tol):
+// a measure-zero coincidence that would have to happen at every corner of a void.
+// The random probes (step 4) are an independent backstop for that and for bugs here.
+//
+// Tolerance: a point is covered when a center is within r*(1+tol), so voids whose
+// corners are all within about r*tol of a third disk are accepted. Centers within
+// r*tol of each other count as one disk (coincident circles have no corners, and a
+// duplicate must not "cover" the corners of its twin).
+//
+// Neighbours are found either by looking at every center and every periodic image
+// that can be in range (obviously correct) or by a bin grid (fast). Both produce the
+// same images with bit-identical coordinates; oracle_test.cpp checks they agree.
+
+#include "oracle/oracle.h"
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <sstream>
+#include <stdexcept>
+
+namespace oracle {
+namespace {
+
+constexpr std::size_t kKeep = 100;           // entries kept in the report lists
+constexpr std::size_t kAllPairsMaxN = 256;  // Method::automatic uses all pairs up to here
+
+// Periodic image (a, b) of center j, at (x, y) = center_j + (a*width, b*height).
+struct Image {
+  std::size_t j;
+  long long a, b;
+  double x, y;
+};
+
+long long floor_div(long long u, long long n) {
+  if (u >= 0 && u < n) return 0;  // the common case, without a (slow) division
+  return u >= 0 ? u / n : -((-u + n - 1) / n);
+}
+
+double wrap(double v, double period) {
+  v -= period * std::floor(v / period);
+  return v < period ? v : 0.0;  // v can round up to period
+}
+
+// Finds every periodic image of every center within distance R of a point that may lie
+// anywhere in the plane. Centers must be wrapped into the box.
+class Images {
+ public:
+  Images(const Box& box, const Points& c, double cell_side, bool use_grid)
+      : w_(box.width), h_(box.height), grid_(use_grid) {
+    for (const auto& p : c) {
+      x_.push_back(p[0]);
+      y_.push_back(p[1]);
+    }
+    if (!grid_) return;
+    // Cells at least cell_side wide, but not (many) more cells than centers.
+    const double side = std::max(cell_side, std::sqrt(w_ * h_ / (2.0 * c.size())));
+    nx_ = static_cast<long long>(std::clamp(std::floor(w_ / side), 1.0, 1e6));
+    ny_ = static_cast<long long>(std::clamp(std::floor(h_ / side), 1.0, 1e6));
+    cw_ = w_ / nx_;
+    ch_ = h_ / ny_;
+    // Counting sort of the centers by cell.
+    std::vector<std::size_t> cell(c.size());
+    start_.assign(nx_ * ny_ + 1, 0);
+    for (std::size_t k = 0; k < c.size(); ++k) {
+      const long long cx = std::min(nx_ - 1, static_cast<long long>(x_[k] / cw_));
+      const long long cy = std::min(ny_ - 1, static_cast<long long>(y_[k] / ch_));
+      cell[k] = cy * nx_ + cx;
+      ++start_[cell[k] + 1];
+    }
+    for (std::size_t q = 1; q < start_.size(); ++q) start_[q] += start_[q - 1];
+    std::vector<std::size_t> fill(start_.begin(), start_.end() - 1);
+    id_.resize(c.size());
+    for (std::size_t k = 0; k < c.size(); ++k) id_[fill[cell[k]]++] = k;
+    for (std::size_t k : id_) {  // coordinates in cell order, for cache locality
+      cx_.push_back(x_[k]);
+      cy_.push_back(y_[k]);
+    }
+  }
+
+  // All center indices, in grid cell order when there is a grid: visiting centers in
+  // that order keeps the memory accesses of neighbouring queries close together.
+  std::vector<std::size_t> order() const {
+    if (grid_) return id_;
+    std::vector<std::size_t> all(x_.size());
+    for (std::size_t k = 0; k < all.size(); ++k) all[k] = k;
+    return all;
+  }
+
+  // Calls f(image) for each image within R of (px, py); stops and returns true as soon
+  // as f returns true.
+  template <class F>
+  bool visit(double px, double py, double R, F&& f) const {
+    return grid_ ? visit_grid(px, py, R, f) : visit_all(px, py, R, f);
+  }
+
+ private:
+  // The single place where an image is made and tested, for both methods.
+  // (xj, yj) is center j, read from x_/y_ or from the grid's cell-ordered copy.
+  template <class F>
+  bool consider(double px, double py, double R, std::size_t j, double xj, double yj,
+                long long a, long long b, F& f) const {
+    const Image im{j, a, b, xj + a * w_, yj + b * h_};
+    const double dx = im.x - px, dy = im.y - py;
+    return dx * dx + dy * dy <= R * R && f(im);
+  }
+
+  // With 0 <= x_j < w, x_j + a*w is within R of px only if (px-R)/w - 1 < a <= (px+R)/w;
+  // one extra offset on each side guards against rounding.
+  template <class F>
+  bool visit_all(double px, double py, double R, F& f) const {
+    const auto a0 = static_cast<long long>(std::floor((px - R) / w_)) - 1;
+    const auto a1 = static_cast<long long>(std::floor((px + R) / w_)) + 1;
+    const auto b0 = static_cast<long long>(std::floor((py - R) / h_)) - 1;
+    const auto b1 = static_cast<long long>(std::floor((py + R) / h_)) + 1;
+    for (std::size_t j = 0; j < x_.size(); ++j)
+      for (long long a = a0; a <= a1; ++a) {
+        if (std::fabs(x_[j] + a * w_ - px) > R * (1 + 1e-9)) continue;  // cheap, conservative
+        for (long long b = b0; b <= b1; ++b)
+          if (consider(px, py, R, j, x_[j], y_[j], a, b, f)) return true;
+      }
+    return false;
+  }
+
+  // Unwrapped column u covers x in [u*cw, (u+1)*cw): it is column u mod nx shifted by
+  // floor(u/nx) periods. Columns cu-K..cu+K with K*cw > R cover [px-R, px+R], and
+  // distinct u give distinct (column, shift), so every image is seen exactly once,
+  // however few columns the grid has. Same for rows.
+  template <class F>
+  bool visit_grid(double px, double py, double R, F& f) const {
+    const auto K = 1 + static_cast<long long>(std::floor(R / cw_ + 1e-6));
+    const auto L = 1 + static_cast<long long>(std::floor(R / ch_ + 1e-6));
+    const auto cu = static_cast<long long>(std::floor(px / cw_));
+    const auto cv = static_cast<long long>(std::floor(py / ch_));
+    for (long long u = cu - K; u <= cu + K; ++u) {
+      const long long a = floor_div(u, nx_);
+      for (long long v = cv - L; v <= cv + L; ++v) {
+        const long long b = floor_div(v, ny_);
+        const long long cell = (v - b * ny_) * nx_ + (u - a * nx_);
+        for (std::size_t k = start_[cell]; k < start_[cell + 1]; ++k)
+          if (consider(px, py, R, id_[k], cx_[k], cy_[k], a, b, f)) return true;
+      }
+    }
+    return false;
+  }
+
+  double w_, h_;
+  bool grid_;
+  std::vector<double> x_, y_;
+  long long nx_ = 1, ny_ = 1;
+  double cw_ = 0, ch_ = 0;
+  std::vector<std::size_t> start_;  // centers of cell q: id_[start_[q] .. start_[q+1])
+  std::vector<std::size_t> id_;
+  std::vector<double> cx_, cy_;  // x_[id_[k]], y_[id_[k]]
+};
+
+void add_conflict(Report& rep, std::size_t i, std::size_t j, double d) {
+  if (rep.conflicts.size() < kKeep) rep.conflicts.push_back({i, j, d});
+  ++rep.conflict_count;
+}
+
+// why() builds the message; it is only called for kept entries (formatting is slow).
+template <class Why>
+void add_uncovered(Report& rep, const Box& box, double x, double y, Why why) {
+  if (rep.uncovered.size() < kKeep)
+    rep.uncovered.push_back({wrap(x, box.width), wrap(y, box.height), why()});
+  ++rep.uncovered_count;
+}
+
+Report run(const Box& box, double r, const Points& centers, double tol, bool conflicts,
+           bool maximality, std::size_t probes, std::uint64_t seed, Method method) {
+  const double W = box.width, H = box.height;
+  if (!(std::isfinite(W) && std::isfinite(H) && W > 0 && H > 0))
+    throw std::invalid_argument("oracle: box sides must be finite and positive");
+  if (!(std::isfinite(r) && r > 0)) throw std::invalid_argument("oracle: r must be > 0");
+  if (!(tol >= 0 && tol < 1)) throw std::invalid_argument("oracle: tol must be in [0, 1)");
+  Points c;
+  for (const auto& p : centers) {
+    if (!(std::isfinite(p[0]) && std::isfinite(p[1])))
+      throw std::invalid_argument("oracle: centers must be finite");
+    c.push_back({wrap(p[0], W), wrap(p[1], H)});
+  }
+  const std::size_t n = c.size();
+
+  Report rep;
+  rep.conflicts_checked = conflicts;
+  rep.maximality_checked = maximality;
+  rep.n = n;
+  rep.r = r;
+  rep.tol = tol;
+  if (n == 0) {
+    if (maximality) add_uncovered(rep, box, 0, 0, [] { return "there are no disks"; });
+    return rep;
+  }
+
+  const bool grid =
+      method == Method::grid || (method == Method::automatic && n > kAllPairsMaxN);
+  const double reach = r * (1 + tol);  // a point is covered if a center is this close
+  const double same = r * tol;         // centers this close are one disk
+  // Coverage queries have radius `reach`: slightly larger cells keep them to 3x3 cells.
+  const Images images(box, c, 1.01 * reach, grid);
+
+  auto dist2 = [](double x0, double y0, double x1, double y1) {
+    return (x1 - x0) * (x1 - x0) + (y1 - y0) * (y1 - y0);
+  };
+  auto dist = [&](double x0, double y0, double x1, double y1) {
+    return std::sqrt(dist2(x0, y0, x1, y1));
+  };
+  // Is (px, py) within reach of a disk other than the given one or two (generator) disks?
+  auto covered_by_other = [&](double px, double py, double gx0, double gy0, double gx1,
+                              double gy1) {
+    return images.visit(px, py, reach, [&](const Image& k) {
+      return dist2(k.x, k.y, gx0, gy0) > same * same && dist2(k.x, k.y, gx1, gy1) > same * same;
+    });
+  };
+
+  // Steps 2 (corners) and conflicts: every pair of disks, and every disk with its own
+  // images, at every periodic offset that brings them within 2r.
+  std::vector<char> meets(n, 0);  // does circle i meet another circle?
+  for (std::size_t i : images.order()) {
+    const double xi = c[i][0], yi = c[i][1];
+    images.visit(xi, yi, 2 * r, [&](const Image& im) {
+      if (im.j == i && im.a == 0 && im.b == 0) return false;  // disk i itself
+      const double d = dist(xi, yi, im.x, im.y);
+      if (d > same && d <= 2 * r) meets[i] = 1;
+      // Count each pair once: j > i, or j == i with a "positive" offset (not its mirror).
+      const bool once = im.j > i || (im.j == i && (im.a > 0 || (im.a == 0 && im.b > 0)));
+      if (!once) return false;
+      rep.min_distance = std::min(rep.min_distance, d);
+      if (conflicts && d < r * (1 - tol)) add_conflict(rep, i, im.j, d);
+      if (!maximality || d <= same || d > 2 * r) return false;
+      // Intersection points in angle form: from c_i towards the other center, turned
+      // by +-acos(d/2r). Tangent circles (half == 0) meet at one point.
+      const double base = std::atan2(im.y - yi, im.x - xi);
+      const double half = std::acos(std::min(1.0, d / (2 * r)));
+      for (double ang : {base - half, base + half}) {
+        const double px = xi + r * std::cos(ang), py = yi + r * std::sin(ang);
+        if (!covered_by_other(px, py, xi, yi, im.x, im.y))
+          add_uncovered(rep, box, px, py, [&] {
+            std::ostringstream why;
+            why << "corner of disks " << i << " and " << im.j << " (image offset " << im.a
+                << "," << im.b << ") is not covered by a third disk";
+            return why.str();
+          });
+        if (half == 0) break;
+      }
+      return false;
+    });
+  }
+  if (!maximality) return rep;
+
+  // Step 3: a circle that meets no other circle borders a void.
+  for (std::size_t i = 0; i < n; ++i) {
+    if (meets[i]) continue;
+    const double xi = c[i][0], yi = c[i][1];
+    if (!covered_by_other(xi + r, yi, xi, yi, xi, yi))
+      add_uncovered(rep, box, xi + r, yi, [&] {
+        return "circle of disk " + std::to_string(i) + " meets no other circle";
+      });
+  }
+
+  // Step 4: random probes, an independent backstop.
+  std::mt19937_64 rng(seed);
+  auto unit = [&rng] { return static_cast<double>(rng() >> 11) * 0x1.0p-53; };  // [0,1)
+  for (std::size_t p = 0; p < probes; ++p) {
+    const double px = W * unit(), py = H * unit();
+    double nearest = std::numeric_limits<double>::infinity();
+    images.visit(px, py, 2 * r, [&](const Image& k) {
+      nearest = std::min(nearest, dist(px, py, k.x, k.y));
+      return false;
+    });
+    rep.max_probe_gap = std::max(rep.max_probe_gap, nearest);
+    if (!(nearest <= reach))
+      add_uncovered(rep, box, px, py, [&] {
+        std::ostringstream why;
+        why << "probe: nearest center at distance " << nearest;
+        return why.str();
+      });
+  }
+  return rep;
+}
+
+}  // namespace
+
+std::string Report::summary() const {
+  std::ostringstream s;
+  s << "oracle: N=" << n << ", r=" << r << ", tol=" << tol << ". ";
+  if (conflicts_checked) {
+    s << "Conflicts: " << conflict_count;
+    for (std::size_t k = 0; k < conflicts.size() && k < 5; ++k)
+      s << (k ? "; " : " (") << "disks " << conflicts[k].i << " and " << conflicts[k].j
+        << " at distance " << conflicts[k].distance;
+    s << (conflicts.empty() ? "" : conflict_count > 5 ? "; ...)" : ")") << ". ";
+  } else {
+    s << "Conflicts: not checked. ";
+  }
+  s << "Min center distance: " << min_distance << ". ";
+  if (maximality_checked) {
+    s << "Maximal: " << (uncovered_count == 0 ? "yes" : "no") << ", " << uncovered_count
+      << " uncovered witnesses";
+    for (std::size_t k = 0; k < uncovered.size() && k < 5; ++k)
+      s << (k ? "; " : " (") << "(" << uncovered[k].x << ", " << uncovered[k].y
+        << "): " << uncovered[k].why;
+    s << (uncovered.empty() ? "" : uncovered_count > 5 ? "; ...)" : ")")
+      << ". Max probe gap: " << max_probe_gap << ".";
+  } else {
+    s << "Maximality: not checked.";
+  }
+  return s.str();
+}
+
+Report check_conflicts(const Box& box, double r, const Points& centers, double tol,
+                       Method method) {
+  return run(box, r, centers, tol, true, false, 0, 0, method);
+}
+
+Report check_maximal(const Box& box, double r, const Points& centers, double tol,
+                     std::size_t probes, std::uint64_t seed, Method method) {
+  return run(box, r, centers, tol, false, true, probes, seed, method);
+}
+
+Report check_all(const Box& box, double r, const Points& centers, double tol,
+                 std::size_t probes, std::uint64_t seed, Method method) {
+  return run(box, r, centers, tol, true, true, probes, seed, method);
+}
+
+}  // namespace oracle

@@ -1,0 +1,88 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Independent test oracle for disk packings in a periodic box (a torus).
+// Written separately from the library: brute force in spirit, standard library only.
+//
+// Model: box [0,width) x [0,height) with periodic wrap; N disks of radius r.
+//  - conflict: two disks (or a disk and its own periodic image) whose centers are
+//    closer than r*(1-tol);
+//  - covered point: within r*(1+tol) of some center (any periodic image);
+//  - maximal: every point of the torus is covered (checked exactly via circle
+//    intersection points, plus random probes; see oracle.cpp).
+// Centers outside the box are wrapped into it. Inputs must be finite, r > 0,
+// width, height > 0 and 0 <= tol < 1, otherwise std::invalid_argument is thrown.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace oracle {
+
+struct Box {
+  double width = 1, height = 1;
+};
+
+// Disks i <= j closer than r*(1-tol). i == j: a disk and its own periodic image.
+// One entry per pair and periodic image (several images can conflict in a tiny box).
+struct Conflict {
+  std::size_t i, j;
+  double distance;
+};
+
+// Witness of non-maximality, wrapped into the box: an uncovered random probe, a
+// corner of a void (two circles' intersection point not in any third disk), or a
+// point of a circle that meets no other circle.
+struct Uncovered {
+  double x, y;
+  std::string why;
+};
+
+struct Report {
+  // Which checks were run; an unchecked property reads as false.
+  bool conflicts_checked = false;
+  bool maximality_checked = false;
+  // Inputs, echoed for summary().
+  std::size_t n = 0;
+  double r = 0, tol = 0;
+
+  std::vector<Conflict> conflicts;  // the first 100
+  std::size_t conflict_count = 0;   // all of them
+  std::vector<Uncovered> uncovered;  // the first 100
+  std::size_t uncovered_count = 0;   // all of them
+
+  // Smallest center distance over all pairs and images (including a disk and its
+  // own images); only distances <= 2r are seen, so infinity means "none <= 2r".
+  double min_distance = std::numeric_limits<double>::infinity();
+  // Largest distance from a random probe to its nearest center; infinity if some
+  // probe has no center within 2r.
+  double max_probe_gap = 0;
+
+  bool conflict_free() const { return conflicts_checked && conflict_count == 0; }
+  bool maximal() const { return maximality_checked && uncovered_count == 0; }
+  std::string summary() const;  // one paragraph, for test failure messages
+};
+
+using Points = std::vector<std::array<double, 2>>;
+
+// How neighbours are found. all_pairs: every center and every relevant periodic
+// image (obviously correct, O(N) per query). grid: a uniform bin grid (fast).
+// automatic: all_pairs for N <= 256, grid above. Results are identical.
+enum class Method { automatic, all_pairs, grid };
+
+Report check_conflicts(const Box& box, double r, const Points& centers, double tol = 1e-6,
+                       Method method = Method::automatic);
+
+Report check_maximal(const Box& box, double r, const Points& centers, double tol = 1e-6,
+                     std::size_t probes = 100000, std::uint64_t seed = 1,
+                     Method method = Method::automatic);
+
+// Both checks, sharing one pass over the pairs.
+Report check_all(const Box& box, double r, const Points& centers, double tol = 1e-6,
+                 std::size_t probes = 100000, std::uint64_t seed = 1,
+                 Method method = Method::automatic);
+
+}  // namespace oracle

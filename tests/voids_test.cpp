@@ -1,0 +1,124 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "disktune/sampling.h"
+#include "disktune/voids.h"
+#include "test_util.h"
+
+namespace disktune {
+namespace {
+
+// A hexagonal lattice that tiles a periodic box exactly: `cols` points a row at
+// spacing s = 1/cols, an even number of rows s*sqrt(3)/2 apart.
+struct Hex {
+  PeriodicBox box;
+  double s;
+  std::vector<Vec2> points;
+};
+Hex hex_lattice(int cols, int rows) {
+  const double s = 1.0 / cols, dy = s * std::sqrt(3.0) / 2;
+  Hex h{PeriodicBox(1.0, rows * dy), s, {}};
+  for (int j = 0; j < rows; ++j) {
+    for (int i = 0; i < cols; ++i) h.points.push_back({(i + 0.5 * (j % 2)) * s, j * dy});
+  }
+  return h;
+}
+
+Packing packing_of(const Hex& h, double r) {
+  Packing p(h.box.frame(), r);
+  for (const Vec2& c : h.points) p.insert(c, r);
+  return p;
+}
+
+TEST(Corners, RemovedDiskOfTouchingHexLatticeLeavesNoVoid) {
+  // Spacing r: every neighbour circle passes through the removed center, so the void
+  // is a single point, covered within the tolerance (six cocircular circles).
+  const Hex h = hex_lattice(20, 20);
+  const Packing p = packing_of(h, h.s);
+  const DiskId gone = 45;
+  std::vector<Corner> corners;
+  corners_in_region(p, p.center(gone), h.s, {gone}, corners);
+  EXPECT_TRUE(corners.empty());
+}
+
+TEST(Corners, RemovedDiskOfCoveringHexLatticeLeavesSixCorners) {
+  const Hex h = hex_lattice(20, 20);
+  const double r = 1.01 * h.s / std::sqrt(3.0);
+  const Packing p = packing_of(h, r);
+  for (const DiskId gone : {DiskId{0}, DiskId{45}, DiskId{399}}) {  // corners of the box too
+    std::vector<Corner> corners;
+    const Vec2 c = p.center(gone);
+    corners_in_region(p, c, r, {gone}, corners);
+    ASSERT_EQ(corners.size(), 6u) << gone;
+    for (const Corner& k : corners) {
+      EXPECT_LE(distance(k.point, c), r);
+      EXPECT_NEAR(distance(k.point, c), h.s * (std::sqrt(3.0) / 2 - std::sqrt(r * r / (h.s * h.s) - 0.25)), 1e-12);
+    }
+    // With the disk present there is nothing to find.
+    std::vector<Corner> none;
+    corners_in_region(p, c, r, {}, none);
+    EXPECT_TRUE(none.empty());
+  }
+}
+
+TEST(Corners, CocircularSquareIsCoveredOnlyWithinTheTolerance) {
+  // Four disks at the corners of a square of side a: the square's center lies on all
+  // four circles when r = a/sqrt(2).
+  const PeriodicBox box;
+  const double a = 0.2;
+  auto corners_for = [&](double r) {
+    Packing p(box.frame(), r);
+    for (const Vec2& c : {Vec2{0.4, 0.4}, Vec2{0.6, 0.4}, Vec2{0.4, 0.6}, Vec2{0.6, 0.6}}) p.insert(c, r);
+    std::vector<Corner> out;
+    corners_in_region(p, {0.5, 0.5}, 0.01, {}, out);
+    return out;
+  };
+  const double r0 = a / std::sqrt(2.0);
+  EXPECT_TRUE(corners_for(r0).empty());
+  EXPECT_TRUE(corners_for(r0 * (1 - 1e-12)).empty());  // a void far below the tolerance
+  EXPECT_EQ(corners_for(r0 * (1 - 1e-6)).size(), 4u);  // a real void: four corners
+  EXPECT_TRUE(corners_for(r0 * (1 + 1e-6)).empty());
+}
+
+TEST(Corners, OnCircleFindsIsolatedDisksAndTheirCorners) {
+  const PeriodicBox box;
+  Packing p(box.frame(), 0.1);
+  const DiskId lone = p.insert({0.5, 0.5}, 0.1);
+  std::vector<Corner> out;
+  corners_on_circle(p, lone, out);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].b, kNoDisk);
+  const DiskId other = p.insert({0.65, 0.5}, 0.1);
+  out.clear();
+  corners_on_circle(p, lone, out);
+  ASSERT_EQ(out.size(), 2u);
+  for (const Corner& k : out) {
+    EXPECT_EQ(k.b, other);
+    EXPECT_NEAR(distance(k.point, {0.5, 0.5}), 0.1, 1e-15);
+    EXPECT_NEAR(distance(k.point, {0.65, 0.5}), 0.1, 1e-15);
+  }
+}
+
+// The library's maximality test agrees with the oracle on samples with holes punched.
+TEST(Corners, IsMaximalAgreesWithTheOracle) {
+  int non_maximal = 0;
+  for (std::uint64_t seed = 1; seed <= 12; ++seed) {
+    const PeriodicBox box(1.0, 0.8);
+    Rng rng(seed);
+    Packing p = sample_mps(box, 0.04, rng);
+    const auto full = oracle::check_maximal(test::box_of(box), 0.04, test::centers_of(p), 1e-6, 2000, seed);
+    ASSERT_TRUE(full.maximal()) << full.summary();
+    EXPECT_TRUE(is_maximal(p));
+    const int holes = static_cast<int>(seed % 3);
+    for (int k = 0; k < holes; ++k) p.remove(p.ids()[uniform_index(rng, p.size())]);
+    const auto cut = oracle::check_maximal(test::box_of(box), 0.04, test::centers_of(p), 1e-6, 2000, seed);
+    EXPECT_EQ(is_maximal(p), cut.maximal()) << "seed " << seed << ": " << cut.summary();
+    non_maximal += !cut.maximal();
+  }
+  EXPECT_GT(non_maximal, 0);  // the comparison did see both answers
+}
+
+}  // namespace
+}  // namespace disktune
