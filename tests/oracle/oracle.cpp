@@ -60,7 +60,8 @@ long long floor_div(long long u, long long n) {
 
 double wrap(double v, double period) {
   v -= period * std::floor(v / period);
-  return v < period ? v : 0.0;  // v can round up to period
+  if (v < 0) v += period;          // rounding can leave v just outside [0, period)
+  return v < period ? v : 0.0;
 }
 
 // Finds every periodic image of every center within distance R of a point that may lie
@@ -305,6 +306,7 @@ Report run(const Box& box, double r, const Points& centers, double tol, bool con
 
 std::string Report::summary() const {
   std::ostringstream s;
+  s.precision(10);
   s << "oracle: N=" << n << ", r=" << r << ", tol=" << tol << ". ";
   if (conflicts_checked) {
     s << "Conflicts: " << conflict_count;

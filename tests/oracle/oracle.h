@@ -49,10 +49,11 @@ struct Report {
   std::size_t n = 0;
   double r = 0, tol = 0;
 
-  std::vector<Conflict> conflicts;  // the first 100
-  std::size_t conflict_count = 0;   // all of them
-  std::vector<Uncovered> uncovered;  // the first 100
-  std::size_t uncovered_count = 0;   // all of them
+  // The first 100 found (in no particular order), and how many there are in all.
+  std::vector<Conflict> conflicts;
+  std::size_t conflict_count = 0;
+  std::vector<Uncovered> uncovered;
+  std::size_t uncovered_count = 0;
 
   // Smallest center distance over all pairs and images (including a disk and its
   // own images); only distances <= 2r are seen, so infinity means "none <= 2r".
@@ -70,7 +71,8 @@ using Points = std::vector<std::array<double, 2>>;
 
 // How neighbours are found. all_pairs: every center and every relevant periodic
 // image (obviously correct, O(N) per query). grid: a uniform bin grid (fast).
-// automatic: all_pairs for N <= 256, grid above. Results are identical.
+// automatic: all_pairs for N <= 256, grid above. Verdicts, counts and distances are
+// identical; which entries are kept when there are more than 100 can differ.
 enum class Method { automatic, all_pairs, grid };
 
 Report check_conflicts(const Box& box, double r, const Points& centers, double tol = 1e-6,
