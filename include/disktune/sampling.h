@@ -24,6 +24,8 @@ struct MpsStats {
   std::size_t void_cells = 0;    // cells left active after the dart levels
   std::size_t void_disks = 0;    // disks added by exact void elimination
   int levels = 0;               // dart levels run
+  // Where the time went, in seconds.
+  double darts_seconds = 0, prune_seconds = 0, voids_seconds = 0, build_seconds = 0;
 };
 
 /// A maximal Poisson-disk sample of the periodic box with uniform radius r: unbiased

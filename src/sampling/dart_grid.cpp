@@ -81,30 +81,34 @@ void DartGrid::prefetch_block(Cell b) const {
   }
 }
 
-void DartGrid::keep_uncovered(Cell c, int level, bool split, std::vector<Cell>& out) const {
+void DartGrid::keep_uncovered(Cell c, int level, bool split, CellList& out) const {
   const Cell base = base_of(c, level);
   if (filled(base)) return;
-  // A disk covers a (sub)cell when it covers the corner farthest from its center.
-  auto covers = [&](Vec2 p, Vec2 clo, Vec2 cs) {
+  // A disk covers a (sub)cell when it covers the corner farthest from its center. The
+  // cell's center is a corner of each of its children, so only disks that reach the
+  // center can cover the cell or a child: one scan collects them (a few at most).
+  const Vec2 lo = corner(c, level), s = size(level), mid = lo + s * 0.5;
+  Vec2 near[32];
+  const int n = gather(base, mid, r_, near);
+  auto covered = [&](Vec2 clo, Vec2 cs) {
     const Vec2 chi = clo + cs, cmid = clo + cs * 0.5;
-    const Vec2 far{p.x < cmid.x ? chi.x : clo.x, p.y < cmid.y ? chi.y : clo.y};
-    return is_covered(squared_distance(p, far), r_);
+    for (int k = 0; k < n; ++k) {
+      const Vec2 p = near[k];
+      const Vec2 far{p.x < cmid.x ? chi.x : clo.x, p.y < cmid.y ? chi.y : clo.y};
+      if (is_covered(squared_distance(p, far), r_)) return true;
+    }
+    return false;
   };
-  const Vec2 lo = corner(c, level), s = size(level);
-  if (any_in_block(base, [&](Vec2 p) { return covers(p, lo, s); })) return;
+  if (covered(lo, s)) return;
   if (!split) {
     out.push_back(c);
     return;
   }
-  // Test the four children against the disks that reach the cell, collected once.
-  Vec2 near[32];
-  const int n = gather(base, lo + s * 0.5, r_ + norm(s * 0.5), near);
   const Vec2 h = s * 0.5;
   for (std::uint32_t k = 0; k < 4; ++k) {
-    const Vec2 clo = lo + Vec2{(k & 1) * h.x, (k >> 1) * h.y};
-    bool covered = false;
-    for (int i = 0; i < n && !covered; ++i) covered = covers(near[i], clo, h);
-    if (!covered) out.push_back({2 * c.ix + (k & 1), 2 * c.iy + (k >> 1)});
+    if (!covered(lo + Vec2{(k & 1) * h.x, (k >> 1) * h.y}, h)) {
+      out.push_back({2 * c.ix + (k & 1), 2 * c.iy + (k >> 1)});
+    }
   }
 }
 

@@ -12,12 +12,14 @@
 #include "disktune/frame.h"
 #include "disktune/geometry.h"
 #include "disktune/tolerance.h"
+#include "../packing/huge_page_allocator.h"
 
 namespace disktune::detail {
 
 struct Cell {
   std::uint32_t ix, iy;  // at its level's resolution
 };
+using CellList = std::vector<Cell, HugePageAllocator<Cell>>;  // read at random by darts
 
 class DartGrid {
  public:
@@ -25,7 +27,7 @@ class DartGrid {
 
   int mx() const { return mx_; }
   int my() const { return my_; }
-  const std::vector<Vec2>& centers() const { return centers_; }
+  const std::vector<Vec2, HugePageAllocator<Vec2>>& centers() const { return centers_; }
 
   Vec2 size(int level) const { return size_[level]; }
   Vec2 corner(Cell c, int level) const;
@@ -40,7 +42,7 @@ class DartGrid {
 
   /// Appends to `out` the children of cell c (at `level`) that no single disk covers
   /// (the cheap test, enough for most cells), or c itself when `split` is false.
-  void keep_uncovered(Cell c, int level, bool split, std::vector<Cell>& out) const;
+  void keep_uncovered(Cell c, int level, bool split, CellList& out) const;
   /// Exact test: false when some point of the cell is uncovered, in which case
   /// `witness` is set to one such point, drawn uniformly from the uncovered part of the
   /// cell when a few darts find it (a corner of the uncovered part otherwise).
@@ -60,7 +62,7 @@ class DartGrid {
   double r_;
   int mx_, my_;     // base cells per axis: an integer number per period
   Vec2 size_[32];   // cell size at each level
-  std::vector<Vec2> centers_;
+  std::vector<Vec2, HugePageAllocator<Vec2>> centers_;
 };
 
 template <class Rng>

@@ -11,6 +11,7 @@
 //     covers the cell's whole base cell. Every point of the domain then lies in a cell
 //     known to be covered: the sample is maximal.
 #include <algorithm>
+#include <chrono>
 
 #include "dart_grid.h"
 #include "disktune/sampling.h"
@@ -18,6 +19,7 @@
 namespace disktune {
 
 using detail::Cell;
+using detail::CellList;
 using detail::DartGrid;
 
 namespace {
@@ -26,7 +28,7 @@ namespace {
 // dart there simply conflicts), so the list is fixed and darts can be drawn ahead of
 // use: a short pipeline prefetches each dart's neighbourhood, because this loop is
 // bound by memory latency, not arithmetic.
-std::size_t throw_darts(DartGrid& grid, const std::vector<Cell>& active, int level,
+std::size_t throw_darts(DartGrid& grid, const CellList& active, int level,
                         std::size_t throws, Rng& rng) {
   constexpr std::size_t kAhead = 16, kHalf = kAhead / 2;
   struct Dart {
@@ -73,8 +75,14 @@ Packing sample_mps(const PeriodicBox& box, double r, Rng& rng, const MpsOptions&
   MpsStats& st = stats ? *stats : local;
   st = MpsStats{};
 
+  auto clock = std::chrono::steady_clock::now();
+  auto lap = [&clock](double& seconds) {
+    const auto now = std::chrono::steady_clock::now();
+    seconds += std::chrono::duration<double>(now - clock).count();
+    clock = now;
+  };
   DartGrid grid(box.frame(), r);
-  std::vector<Cell> active;
+  CellList active;
   active.reserve(grid.centers().size());
   for (int iy = 0; iy < grid.my(); ++iy) {
     for (int ix = 0; ix < grid.mx(); ++ix) {
@@ -86,12 +94,14 @@ Packing sample_mps(const PeriodicBox& box, double r, Rng& rng, const MpsOptions&
     const auto throws = static_cast<std::size_t>(options.darts_per_active_cell * active.size());
     st.dart_disks += throw_darts(grid, active, level, throws, rng);
     st.darts += throws;
+    lap(st.darts_seconds);
     // Keep what is still uncovered, split in four for the next level.
     const bool split = level + 1 < options.levels;
-    std::vector<Cell> next;
+    CellList next;
     next.reserve(split ? active.size() * 2 : active.size());
     for (const Cell c : active) grid.keep_uncovered(c, level, split, next);
     active.swap(next);
+    lap(st.prune_seconds);
   }
   st.levels = level;
   st.void_cells = active.size();
@@ -110,11 +120,13 @@ Packing sample_mps(const PeriodicBox& box, double r, Rng& rng, const MpsOptions&
     ++st.void_disks;
   }
 
+  lap(st.voids_seconds);
   // Ids in cell order keep neighbours close in memory for everything downstream.
   Packing packing(box.frame(), r);
   for (const Vec2& c : grid.centers()) {
     if (c.x == c.x) packing.insert(c, r);  // not NaN: the cell holds a center
   }
+  lap(st.build_seconds);
   return packing;
 }
 
