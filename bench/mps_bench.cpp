@@ -22,16 +22,19 @@ namespace {
 struct Row {
   std::size_t disks;
   double mps, delaunay;
+  MpsStats stats;  // of the fastest run
 };
 
-double mps_seconds(double r, int reps, std::size_t& disks) {
+double mps_seconds(double r, int reps, Row& row) {
   double best = 1e300;
   for (int k = 0; k < reps; ++k) {
     Rng rng(static_cast<std::uint64_t>(k) + 1);
+    MpsStats stats;
     const auto t0 = std::chrono::steady_clock::now();
-    const Packing p = sample_mps(PeriodicBox(), r, rng);
-    best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
-    disks = p.size();
+    const Packing p = sample_mps(PeriodicBox(), r, rng, {}, &stats);
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (s < best) best = s, row.stats = stats;
+    row.disks = p.size();
   }
   return best;
 }
@@ -54,12 +57,19 @@ int main(int argc, char** argv) {
     const double r = 2 * std::sqrt(0.547 / (3.14159265358979 * static_cast<double>(n)));
     const int reps = n >= 1000000 ? 3 : 5;
     Row row{};
-    row.mps = mps_seconds(r, reps, row.disks);
+    row.mps = mps_seconds(r, reps, row);
     row.delaunay = bench::delaunay_seconds(row.disks, reps, 99);
     rows.push_back(row);
     std::printf("%10zu %10.6f %12.4f %12.4f %8.2f\n", row.disks, r, row.mps, row.delaunay,
                 row.mps / row.delaunay);
     std::fflush(stdout);
+  }
+  std::printf("\nwhere the MPS time goes (fastest run), seconds:\n%10s %8s %8s %8s %8s %10s %10s\n",
+              "disks", "darts", "prune", "voids", "build", "darts_n", "void_disks");
+  for (const Row& row : rows) {
+    const MpsStats& s = row.stats;
+    std::printf("%10zu %8.3f %8.3f %8.3f %8.3f %10zu %10zu\n", row.disks, s.darts_seconds,
+                s.prune_seconds, s.voids_seconds, s.build_seconds, s.darts, s.void_disks);
   }
   const Row& a = rows.front();
   const Row& b = rows.back();
