@@ -113,12 +113,29 @@ void DartGrid::keep_uncovered(Cell c, int level, bool split, CellList& out) cons
 }
 
 int DartGrid::gather(Cell base, Vec2 q, double reach, Vec2 (&out)[32]) const {
-  int n = 0;
+  // Only the rows and columns of the block that [q - reach, q + reach] meets: 3 x 3
+  // cells when q is near the middle of its base cell.
+  const Vec2 b = size(0), lo = corner(base, 0);
+  const int x0 = q.x - reach < lo.x - b.x ? -2 : -1, x1 = q.x + reach > lo.x + 2 * b.x ? 2 : 1;
+  const int y0 = q.y - reach < lo.y - b.y ? -2 : -1, y1 = q.y + reach > lo.y + 2 * b.y ? 2 : 1;
   const double reach2 = reach * reach * (1 + 4 * kRelTol);
-  any_in_block(base, [&](Vec2 p) {
-    if (squared_distance(p, q) <= reach2) out[n++] = p;
-    return n == 32;
-  });
+  const int bx = static_cast<int>(base.ix), by = static_cast<int>(base.iy);
+  const bool inside = bx >= 2 && bx < mx_ - 2 && by >= 2 && by < my_ - 2;
+  int n = 0;
+  for (int dy = y0; dy <= y1; ++dy) {
+    for (int dx = x0; dx <= x1; ++dx) {
+      int ix = bx + dx, iy = by + dy;
+      Vec2 off{0, 0};
+      if (!inside && (ix < 0 || ix >= mx_ || iy < 0 || iy >= my_)) {
+        if (!frame_.periodic) continue;
+        const int wx = floor_div(ix, mx_), wy = floor_div(iy, my_);
+        ix -= wx * mx_, iy -= wy * my_;
+        off = {wx * frame_.extent.x, wy * frame_.extent.y};
+      }
+      const Vec2 p = centers_[static_cast<std::size_t>(iy) * mx_ + ix] + off;
+      if (squared_distance(p, q) <= reach2 && n < 32) out[n++] = p;
+    }
+  }
   return n;
 }
 
