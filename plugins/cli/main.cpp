@@ -13,8 +13,8 @@ int main(int argc, char** argv) {
       "disktune: maximal Poisson-disk packings whose density is tuned by disk injection and "
       "ejection.\nWith no arguments, runs the built-in demo (writes disktune-demo/)."};
   app.require_subcommand(0, 1);
-  SampleArgs sample;
-  add_sample_command(app, sample);
+  Action action = run_demo;
+  add_sample_command(app, action);
 
   try {
     app.parse(argc, argv);
@@ -28,8 +28,7 @@ int main(int argc, char** argv) {
   }
 
   try {
-    if (app.got_subcommand("sample")) return run_sample(sample);
-    return run_demo();
+    return action();
   } catch (const disktune::InvalidInput& e) {
     std::cerr << "disktune: error: " << e.what() << "\n";
     return kExitUsage;

@@ -2,6 +2,7 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 
 #include "commands.h"
 #include "disktune/density.h"
@@ -11,37 +12,15 @@
 
 namespace disktune::cli {
 
-void add_sample_command(CLI::App& app, SampleArgs& args) {
-  CLI::App* cmd = app.add_subcommand(
-      "sample", "Make a maximal Poisson-disk sample (MPS) and write it as CSV (x,y,r).");
-  cmd->add_option("--domain", args.domain, "Domain kind; only 'periodic' (a periodic box) for now")
-      ->check(CLI::IsMember({"periodic"}))
-      ->capture_default_str();
-  cmd->add_option("--width", args.width, "Width W of the periodic box")->capture_default_str();
-  cmd->add_option("--height", args.height, "Height H of the periodic box")->capture_default_str();
-  cmd->add_option("--radius,-r", args.radius,
-                  "Conflict radius r: no center closer than r to another; every point within r "
-                  "of a center. Needs 0 < r < min(W,H)/2")
-      ->required();
-  cmd->add_option("--seed", args.seed, "Random seed; the same seed gives the same output")
-      ->capture_default_str();
-  cmd->add_option("--output,-o", args.output, "CSV file to write (header x,y,r)");
-  cmd->add_option("--svg", args.svg, "Also draw the packing as an SVG picture");
-}
-
 namespace {
 
-// Checks that an output path's folder exists before any work is done, so a typo costs
-// no minutes of sampling.
-void check_output_folder(const std::string& path) {
-  if (path.empty()) return;
-  const std::filesystem::path parent = std::filesystem::path(path).parent_path();
-  if (!parent.empty() && !std::filesystem::is_directory(parent)) {
-    throw IoError("cannot write '" + path + "': folder '" + parent.string() + "' does not exist");
-  }
-}
-
-}  // namespace
+struct SampleArgs {
+  std::string domain = "periodic";
+  double width = 1, height = 1;
+  double radius = 0;
+  std::uint64_t seed = 1;
+  std::string output, svg;
+};
 
 int run_sample(const SampleArgs& args) {
   check_output_folder(args.output);
@@ -60,6 +39,36 @@ int run_sample(const SampleArgs& args) {
               box.width(), box.height(), args.output.empty() ? "" : " -> ",
               args.output.c_str());
   return kExitOk;
+}
+
+}  // namespace
+
+void check_output_folder(const std::string& path) {
+  if (path.empty()) return;
+  const std::filesystem::path parent = std::filesystem::path(path).parent_path();
+  if (!parent.empty() && !std::filesystem::is_directory(parent)) {
+    throw IoError("cannot write '" + path + "': folder '" + parent.string() + "' does not exist");
+  }
+}
+
+void add_sample_command(CLI::App& app, Action& action) {
+  auto args = std::make_shared<SampleArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "sample", "Make a maximal Poisson-disk sample (MPS) and write it as CSV (x,y,r).");
+  cmd->add_option("--domain", args->domain, "Domain kind; only 'periodic' (a periodic box) for now")
+      ->check(CLI::IsMember({"periodic"}))
+      ->capture_default_str();
+  cmd->add_option("--width", args->width, "Width W of the periodic box")->capture_default_str();
+  cmd->add_option("--height", args->height, "Height H of the periodic box")->capture_default_str();
+  cmd->add_option("--radius,-r", args->radius,
+                  "Conflict radius r: no center closer than r to another; every point within r "
+                  "of a center. Needs 0 < r < min(W,H)/2")
+      ->required();
+  cmd->add_option("--seed", args->seed, "Random seed; the same seed gives the same output")
+      ->capture_default_str();
+  cmd->add_option("--output,-o", args->output, "CSV file to write (header x,y,r)");
+  cmd->add_option("--svg", args->svg, "Also draw the packing as an SVG picture");
+  cmd->callback([args, &action] { action = [args] { return run_sample(*args); }; });
 }
 
 int run_demo() {
