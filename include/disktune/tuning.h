@@ -1,0 +1,94 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Disk density tuning (the paper's sections 2 and 4): operations that move, add or
+// remove disks of a uniform-radius packing, each leaving it conflict-free and maximal,
+// and the scheduler that runs them in phases until the count is exactly the target.
+#pragma once
+
+#include <cstddef>
+#include <functional>
+#include <string>
+
+#include "disktune/packing.h"
+#include "disktune/periodic_box.h"
+#include "disktune/random.h"
+
+namespace disktune {
+
+/// What the user asks for: an exact disk count, an area fraction eta, or a relative
+/// radius rho (see density.h). Fractions and radii are turned into the nearest count.
+struct Target {
+  enum class Kind { count, area_fraction, relative_radius };
+  Kind kind = Kind::count;
+  double value = 0;
+
+  static Target count(std::size_t n) { return {Kind::count, static_cast<double>(n)}; }
+  static Target area_fraction(double eta) { return {Kind::area_fraction, eta}; }
+  static Target relative_radius(double rho) { return {Kind::relative_radius, rho}; }
+};
+
+/// The disk count a target means for radius r in a domain of the given area. Throws
+/// InvalidInput for a target that is not finite and positive, or above the densest
+/// (hexagonal) packing.
+std::size_t target_count(const Target& target, double r, double area);
+
+/// The operations, and the phases of the scheduler that run them.
+enum class Phase { none, void_injection, repeller_injection, crystal_injection };
+std::string to_string(Phase phase);
+
+/// How `tune` picks operations: `automatic` runs the phases in the paper's order,
+/// switching at the area-fraction thresholds or when a phase stops making progress;
+/// the others run one phase alone.
+enum class Method { automatic, void_injection, repeller_injection, crystal_injection };
+
+struct Progress {
+  std::size_t count;
+  double area_fraction;
+  Phase phase;
+};
+
+struct TuneOptions {
+  Method method = Method::automatic;
+  /// Area fractions at which the automatic schedule moves on (paper, section 4).
+  double void_until = 0.75;
+  double repeller_until = 0.79;
+  /// A sweep over all disks that adds fewer than this fraction of the count is no
+  /// progress; the phase then ends.
+  double min_gain_per_sweep = 2e-4;
+  /// Upper bound on sweeps in one phase, so a run always ends.
+  int max_sweeps_per_phase = 200;
+  /// Called now and then (after each sweep, and each 1/64 of a sweep).
+  std::function<void(const Progress&)> on_progress;
+  /// Called after every single operation that changed the packing (for tests: slow).
+  std::function<void(const Packing&)> after_operation;
+};
+
+struct TuneResult {
+  std::size_t target = 0;  // the count asked for
+  std::size_t count = 0;   // the count reached
+  bool reached = false;    // count == target
+  Phase last_phase = Phase::none;
+  std::size_t sweeps = 0;
+  double seconds = 0;
+};
+
+/// Moves, adds and removes disks of `packing` (uniform radius, conflict-free and
+/// maximal on entry) until it has exactly the target count, or no phase makes progress
+/// any more (then `reached` is false and the packing is the closest it got). Every
+/// intermediate state between operations is conflict-free and maximal.
+TuneResult tune(Packing& packing, const PeriodicBox& box, const Target& target, Rng& rng,
+                const TuneOptions& options = {});
+
+// The single operations. Each returns the number of disks it added (0 when it only
+// moved disks or changed nothing) and leaves the packing conflict-free and maximal.
+// `max_added` caps the count change: an operation that would add more is taken back
+// whole and returns 0.
+
+/// Void injection (2.1): lift p, move it to one corner of its void's diameter pair, and
+/// inject at the diameter corner of what is left while anything is left.
+std::size_t void_inject(Packing& packing, DiskId p, Rng& rng, std::size_t max_added);
+
+/// Repeller injection (2.2): move each neighbour of p to its void corner farthest from
+/// p until a gap opens, inject there; otherwise void-inject p.
+std::size_t repeller_inject(Packing& packing, DiskId p, Rng& rng, std::size_t max_added);
+
+}  // namespace disktune

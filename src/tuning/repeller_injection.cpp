@@ -1,0 +1,45 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Repeller injection (paper, 2.2): push the neighbours of p away from it, one at a
+// time, each to the corner of its own void farthest from p, until one leaves a gap.
+#include <algorithm>
+
+#include "disktune/tuning.h"
+#include "void_repair.h"
+
+namespace disktune {
+
+std::size_t repeller_inject(Packing& packing, DiskId p, Rng& rng, std::size_t max_added) {
+  const Vec2 pc = packing.center(p);
+  const double r = packing.radius(p);
+  // Neighbours: disks overlapping p's, seen in p's frame (one image each).
+  std::vector<Neighbor> near;
+  packing.for_each_near(pc, 2 * r, [&](const Neighbor& n) {
+    if (n.id == p || (packing.flags(n.id) & (kFixed | kFrozen))) return;
+    for (const Neighbor& m : near) {
+      if (m.id == n.id) return;
+    }
+    near.push_back(n);
+  });
+  for (std::size_t i = near.size(); i > 1; --i) std::swap(near[i - 1], near[uniform_index(rng, i)]);
+
+  std::vector<Corner> corners;
+  for (const Neighbor& q : near) {
+    corners.clear();
+    corners_in_region(packing, q.image, r, {q.id}, corners);
+    if (corners.empty()) continue;
+    const auto far = std::max_element(corners.begin(), corners.end(), [&](const Corner& a, const Corner& b) {
+      return squared_distance(a.point, pc) < squared_distance(b.point, pc);
+    });
+    detail::UndoLog log(packing);
+    log.move(q.id, far->point);
+    const std::size_t added = detail::repair_void(log, packing, q.image, r, rng, max_added);
+    if (added > max_added) {
+      log.revert();
+      return 0;
+    }
+    if (added > 0) return added;
+  }
+  return void_inject(packing, p, rng, max_added);
+}
+
+}  // namespace disktune

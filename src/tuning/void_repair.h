@@ -1,0 +1,26 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Shared steps of the tuning operations (internal).
+#pragma once
+
+#include <cstddef>
+#include <utility>
+#include <vector>
+
+#include "disktune/random.h"
+#include "disktune/voids.h"
+#include "undo_log.h"
+
+namespace disktune::detail {
+
+/// Indices of the two corners farthest apart (i == j when there is one corner).
+std::pair<std::size_t, std::size_t> diameter_pair(const std::vector<Corner>& corners);
+
+/// Restores maximality inside D(center, r) after a disk there was lifted or moved: while
+/// the region holds uncovered corners, injects a disk at one end of their diameter pair
+/// (paper, 2.1). Corners are the only place voids can hide: everything outside the
+/// region was covered before. Returns the number injected; stops early, returning
+/// max_added + 1, when more than max_added would be needed.
+std::size_t repair_void(UndoLog& log, const Packing& packing, Vec2 center, double r, Rng& rng,
+                        std::size_t max_added);
+
+}  // namespace disktune::detail

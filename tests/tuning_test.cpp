@@ -1,0 +1,180 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Injection operations and the scheduler, checked by the independent oracle after
+// every single operation.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <tuple>
+
+#include "../src/tuning/undo_log.h"
+#include "disktune/density.h"
+#include "disktune/errors.h"
+#include "disktune/sampling.h"
+#include "disktune/tuning.h"
+#include "test_util.h"
+
+namespace disktune {
+namespace {
+
+::testing::AssertionResult valid(const PeriodicBox& box, const Packing& p, std::uint64_t seed) {
+  const double r = p.max_radius();
+  const auto rep = oracle::check_all(test::box_of(box), r, test::centers_of(p), 1e-6, 3000, seed);
+  if (rep.conflict_free() && rep.maximal()) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << rep.summary();
+}
+
+using Op = std::size_t (*)(Packing&, DiskId, Rng&, std::size_t);
+
+void run_each_op_checked(Op op, const char* name) {
+  const std::tuple<double, double, double> cases[] = {
+      {1.0, 1.0, 0.08}, {1.0, 1.0, 0.05}, {2.0, 0.6, 0.07}, {0.5, 0.5, 0.2}};
+  for (const auto& [w, h, r] : cases) {
+    for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+      const PeriodicBox box(w, h);
+      Rng rng(seed);
+      Packing p = sample_mps(box, r, rng);
+      std::size_t count = p.size(), added_total = 0;
+      for (int step = 0; step < 120; ++step) {
+        const std::vector<DiskId> ids = p.ids();
+        const DiskId id = ids[uniform_index(rng, ids.size())];
+        const std::size_t added = op(p, id, rng, 1000);
+        ASSERT_EQ(p.size(), count + added) << name;
+        count = p.size();
+        added_total += added;
+        ASSERT_TRUE(valid(box, p, seed * 1000 + step))
+            << name << " " << w << "x" << h << " r=" << r << " seed=" << seed << " step=" << step;
+      }
+      EXPECT_GT(added_total, 0u) << name << " never injected: " << w << "x" << h << " r=" << r;
+    }
+  }
+}
+
+TEST(Injection, VoidInjectionKeepsTheInvariantsAfterEveryOperation) {
+  run_each_op_checked(&void_inject, "void");
+}
+
+TEST(Injection, RepellerInjectionKeepsTheInvariantsAfterEveryOperation) {
+  run_each_op_checked(&repeller_inject, "repeller");
+}
+
+TEST(Injection, MaxAddedIsNeverExceededAndARefusedOperationChangesNothing) {
+  const PeriodicBox box;
+  Rng rng(9);
+  Packing p = sample_mps(box, 0.06, rng);
+  for (int step = 0; step < 300; ++step) {
+    const auto before = test::centers_of(p);
+    const std::vector<DiskId> ids = p.ids();
+    const std::size_t added = repeller_inject(p, ids[uniform_index(rng, ids.size())], rng, 0);
+    ASSERT_EQ(added, 0u);
+    ASSERT_EQ(p.size(), before.size());
+  }
+  EXPECT_TRUE(valid(box, p, 5));
+}
+
+TEST(Injection, FixedAndFrozenDisksNeverMove) {
+  const PeriodicBox box;
+  Rng rng(4);
+  Packing p = sample_mps(box, 0.07, rng);
+  std::vector<std::pair<DiskId, Vec2>> pinned;
+  for (DiskId id : p.ids()) {
+    if (id % 3 == 0) {
+      p.set_flags(id, id % 2 ? kFixed : kFrozen);
+      pinned.push_back({id, p.center(id)});
+    }
+  }
+  for (int step = 0; step < 300; ++step) {
+    const std::vector<DiskId> ids = p.ids();
+    repeller_inject(p, ids[uniform_index(rng, ids.size())], rng, 1000);
+  }
+  for (const auto& [id, c] : pinned) {
+    ASSERT_TRUE(p.alive(id));
+    EXPECT_EQ(p.center(id), c);
+  }
+  EXPECT_TRUE(valid(box, p, 6));
+}
+
+TEST(Tune, HitsExactCountsWithMonotoneCountsAndValidStates) {
+  for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+    const PeriodicBox box(1.0, 0.8);
+    Rng rng(seed);
+    const Packing mps = sample_mps(box, 0.05, rng);
+    for (const std::size_t extra : {1u, 7u, 40u}) {
+      Packing p = mps;
+      std::size_t last = p.size();
+      int checked = 0;
+      TuneOptions opt;
+      opt.after_operation = [&](const Packing& q) {
+        ASSERT_GE(q.size(), last);
+        last = q.size();
+        if (++checked % 5 == 0) {
+          ASSERT_TRUE(valid(box, q, checked));
+        }
+      };
+      const TuneResult res = tune(p, box, Target::count(mps.size() + extra), rng, opt);
+      EXPECT_TRUE(res.reached) << "seed " << seed << " +" << extra;
+      EXPECT_EQ(p.size(), mps.size() + extra);
+      EXPECT_TRUE(valid(box, p, seed));
+    }
+  }
+}
+
+TEST(Tune, EachPhaseAloneReachesItsPlateauAndStops) {
+  const PeriodicBox box;
+  Rng rng(2);
+  const Packing mps = sample_mps(box, 0.04, rng);
+  for (const Method m : {Method::void_injection, Method::repeller_injection}) {
+    Packing p = mps;
+    TuneOptions opt;
+    opt.method = m;
+    const TuneResult res = tune(p, box, Target::area_fraction(0.9), rng, opt);
+    EXPECT_FALSE(res.reached);  // 0.9 is beyond what these phases reach
+    const double eta = area_fraction(p.size(), 0.04, box.area());
+    EXPECT_GT(eta, 0.70) << static_cast<int>(m);
+    EXPECT_TRUE(valid(box, p, 3));
+  }
+}
+
+TEST(Tune, TargetsAreValidated) {
+  const double r = 0.01;
+  EXPECT_EQ(target_count(Target::count(123), r, 1.0), 123u);
+  EXPECT_EQ(target_count(Target::area_fraction(0.5), r, 1.0), count_for_area_fraction(0.5, r, 1.0));
+  EXPECT_THROW(target_count(Target::count(0), r, 1.0), InvalidInput);
+  EXPECT_THROW(target_count(Target{Target::Kind::count, 12.5}, r, 1.0), InvalidInput);
+  EXPECT_THROW(target_count(Target::area_fraction(0.95), r, 1.0), InvalidInput);
+  EXPECT_THROW(target_count(Target::area_fraction(-0.1), r, 1.0), InvalidInput);
+  EXPECT_THROW(target_count(Target::relative_radius(1.0), r, 1.0), InvalidInput);
+  EXPECT_THROW(target_count(Target::count(20000), r, 1.0), InvalidInput);  // beyond hex density
+  const PeriodicBox box;
+  Rng rng(1);
+  Packing p = sample_mps(box, 0.05, rng);
+  EXPECT_THROW(tune(p, box, Target::count(p.size() - 1), rng), InvalidInput);  // needs ejection
+}
+
+TEST(UndoLog, RevertRestoresTheExactPacking) {
+  const PeriodicBox box;
+  Rng rng(8);
+  Packing p = sample_mps(box, 0.05, rng);
+  auto snapshot = [&] {
+    std::vector<std::tuple<double, double, double, int>> s;
+    for (DiskId id : p.ids()) s.emplace_back(p.center(id).x, p.center(id).y, p.radius(id), p.flags(id));
+    std::sort(s.begin(), s.end());
+    return s;
+  };
+  const auto before = snapshot();
+  detail::UndoLog log(p);
+  for (int k = 0; k < 500; ++k) {
+    const std::vector<DiskId> ids = p.ids();
+    const DiskId id = ids[uniform_index(rng, ids.size())];
+    switch (uniform_index(rng, 4)) {
+      case 0: log.move(id, box.random_point(rng)); break;
+      case 1: log.remove(id); break;
+      case 2: log.insert(box.random_point(rng), 0.05, kFrozen); break;
+      default: log.set_flags(id, kFixed); break;
+    }
+  }
+  log.revert();
+  EXPECT_EQ(snapshot(), before);
+}
+
+}  // namespace
+}  // namespace disktune
