@@ -57,6 +57,36 @@ TEST(Injection, RepellerInjectionKeepsTheInvariantsAfterEveryOperation) {
   run_each_op_checked(&repeller_inject, "repeller");
 }
 
+TEST(Injection, CrystalGrowthKeepsTheInvariantsAfterEveryStepAndGrowsOneCrystal) {
+  // Box, radius, and the area fraction the crystal must pass: a few disks in a small
+  // box are mostly seam (the lattice does not fit the period), so less is expected.
+  const std::tuple<double, double, double, double> cases[] = {
+      {1.0, 1.0, 0.06, 0.82}, {1.5, 0.7, 0.05, 0.82}, {0.6, 0.6, 0.15, 0.65}};
+  for (const auto& [w, h, r, eta_min] : cases) {
+    for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+      const PeriodicBox box(w, h);
+      Rng rng(seed);
+      Packing p = sample_mps(box, r, rng);
+      const std::size_t start = p.size();
+      std::size_t last = start;
+      int steps = 0;
+      const std::size_t added = crystal_inject(p, rng, 100000, [&] {
+        ASSERT_GE(p.size(), last);
+        last = p.size();
+        if (++steps % 7 == 0) {
+          ASSERT_TRUE(valid(box, p, steps)) << w << "x" << h << " r=" << r << " seed " << seed;
+        }
+      });
+      EXPECT_EQ(p.size(), start + added);
+      ASSERT_TRUE(valid(box, p, seed));
+      std::size_t frozen = 0;
+      for (DiskId id : p.ids()) frozen += (p.flags(id) & kFrozen) != 0;
+      EXPECT_GT(frozen, p.size() * 3 / 4) << "the crystal did not spread";
+      EXPECT_GT(area_fraction(p.size(), r, box.area()), eta_min) << w << "x" << h << " r=" << r;
+    }
+  }
+}
+
 TEST(Injection, MaxAddedIsNeverExceededAndARefusedOperationChangesNothing) {
   const PeriodicBox box;
   Rng rng(9);
@@ -115,6 +145,21 @@ TEST(Tune, HitsExactCountsWithMonotoneCountsAndValidStates) {
       EXPECT_EQ(p.size(), mps.size() + extra);
       EXPECT_TRUE(valid(box, p, seed));
     }
+  }
+}
+
+TEST(Tune, CrystalPhaseHitsExactCounts) {
+  const PeriodicBox box;
+  Rng rng(12);
+  const Packing mps = sample_mps(box, 0.03, rng);
+  for (const double eta : {0.6, 0.75, 0.85, 0.88}) {
+    Packing p = mps;
+    TuneOptions opt;
+    opt.method = Method::crystal_injection;
+    const TuneResult res = tune(p, box, Target::area_fraction(eta), rng, opt);
+    EXPECT_TRUE(res.reached) << eta;
+    EXPECT_EQ(p.size(), count_for_area_fraction(eta, 0.03, 1.0));
+    EXPECT_TRUE(valid(box, p, 4));
   }
 }
 

@@ -91,4 +91,13 @@ std::size_t void_inject(Packing& packing, DiskId p, Rng& rng, std::size_t max_ad
 /// p until a gap opens, inject there; otherwise void-inject p.
 std::size_t repeller_inject(Packing& packing, DiskId p, Rng& rng, std::size_t max_added);
 
+/// Crystal-growth injection (2.3): grows one hexagonal crystal of frozen disks from a
+/// seed pair at distance r over the whole domain; each step moves a mobile disk onto
+/// an attractor site (deleting the disks it would conflict with and refilling their
+/// voids) or injects a frozen disk at an uncovered site. Steps that would lower the
+/// count or add more than max_added are taken back. `after_step` runs after each step
+/// that changed the packing. Returns the number of disks added.
+std::size_t crystal_inject(Packing& packing, Rng& rng, std::size_t max_added,
+                           const std::function<void()>& after_step = {});
+
 }  // namespace disktune

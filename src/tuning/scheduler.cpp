@@ -14,6 +14,7 @@ namespace {
 
 using Operation = std::size_t (*)(Packing&, DiskId, Rng&, std::size_t);
 
+// A phase: sweeps of a per-disk operation, or (op == nullptr) one crystal growth.
 struct PhasePlan {
   Phase phase;
   Operation op;
@@ -23,13 +24,14 @@ struct PhasePlan {
 std::vector<PhasePlan> plan_for(const TuneOptions& o) {
   const PhasePlan void_phase{Phase::void_injection, &void_inject, o.void_until};
   const PhasePlan repeller_phase{Phase::repeller_injection, &repeller_inject, o.repeller_until};
+  const PhasePlan crystal_phase{Phase::crystal_injection, nullptr, 2.0};
   switch (o.method) {
-    case Method::automatic: return {void_phase, repeller_phase};
+    case Method::automatic: return {void_phase, repeller_phase, crystal_phase};
     case Method::void_injection: return {{void_phase.phase, void_phase.op, 2.0}};
     case Method::repeller_injection: return {{repeller_phase.phase, repeller_phase.op, 2.0}};
-    case Method::crystal_injection: break;
+    case Method::crystal_injection: return {crystal_phase};
   }
-  throw InvalidInput("crystal injection is not implemented yet");
+  return {};
 }
 
 }  // namespace
@@ -54,6 +56,16 @@ TuneResult tune(Packing& packing, const PeriodicBox& box, const Target& target, 
   for (const PhasePlan& plan : plan_for(options)) {
     if (packing.size() >= result.target) break;
     result.last_phase = plan.phase;
+    if (!plan.op) {
+      std::size_t steps = 0;
+      crystal_inject(packing, rng, result.target - packing.size(), [&] {
+        if (options.after_operation) options.after_operation(packing);
+        if (++steps % 256 == 0) report(plan.phase);
+      });
+      ++result.sweeps;
+      report(plan.phase);
+      continue;
+    }
     for (int sweep = 0; sweep < options.max_sweeps_per_phase; ++sweep) {
       if (packing.size() >= result.target || eta() >= plan.until) break;
       const std::size_t before = packing.size();

@@ -36,9 +36,15 @@ class UndoLog {
   long added() const { return inserted_minus_removed(); }
   bool empty() const { return edits_.empty(); }
 
+  /// A point in the log to come back to with revert_to().
+  std::size_t mark() const { return edits_.size(); }
+
   /// Takes every edit back, newest first. A removed disk comes back with the same
   /// center, radius and flags, possibly under another id.
-  void revert() {
+  void revert() { revert_to(0); }
+
+  /// Takes back the edits made since `mark`, newest first.
+  void revert_to(std::size_t mark) {
     // A disk brought back may get a new id; older edits of it follow the new one.
     std::vector<std::pair<DiskId, DiskId>> renamed;
     auto current = [&](DiskId id) {
@@ -47,7 +53,7 @@ class UndoLog {
       }
       return id;
     };
-    for (auto e = edits_.rbegin(); e != edits_.rend(); ++e) {
+    for (auto e = edits_.rbegin(); e != edits_.rend() - mark; ++e) {
       const DiskId id = current(e->id);
       switch (e->kind) {
         case Kind::insert: packing_.remove(id); break;
@@ -56,7 +62,7 @@ class UndoLog {
         case Kind::remove: renamed.push_back({e->id, packing_.insert(e->center, e->radius, e->flags)}); break;
       }
     }
-    edits_.clear();
+    edits_.resize(mark);
   }
   /// Keeps the edits: the log forgets them.
   void commit() { edits_.clear(); }
