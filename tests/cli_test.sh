@@ -58,6 +58,28 @@ if [ "$(id -u)" -ne 0 ]; then  # root writes anywhere; the check means something
 fi
 absent unwritable-output ro/z.csv
 
+# tune: exact counts, sampled here or read back, and its refusals.
+expect tune 0 "^tune: [0-9]+ -> 900 disks \(target 900, reached\)" -- "$bin" tune --radius 0.03 --target-count 900 --seed 2 --output t.csv --svg t.svg
+[ "$(($(wc -l <t.csv) - 1))" -eq 900 ] && pass=$((pass + 1)) || { echo "FAIL tune row count"; fails=$((fails + 1)); }
+"$bin" sample --radius 0.03 --seed 4 --output m.csv >/dev/null
+expect tune-input 0 "-> [0-9]+ disks .*reached.*eta = 0\.6[0-9]+" -- "$bin" tune --radius 0.03 --input m.csv --target-fraction 0.65 --method void
+expect tune-crystal 0 "eta = 0\.85[0-9]*, " -- "$bin" tune --radius 0.03 --target-fraction 0.85 --method crystal
+expect tune-not-reached 4 "NOT reached" -- "$bin" tune --radius 0.03 --target-fraction 0.9 --method void --output nr.csv
+[ -s nr.csv ] && pass=$((pass + 1)) || { echo "FAIL not-reached writes the closest packing"; fails=$((fails + 1)); }
+expect tune-two-targets 2 "excludes" -- "$bin" tune --radius 0.03 --target-count 900 --target-rho 0.9
+expect tune-no-target 2 "give one target" -- "$bin" tune --radius 0.03
+expect tune-too-dense 2 "densest packing" -- "$bin" tune --radius 0.03 --target-count 5000
+expect tune-below 2 "ejection" -- "$bin" tune --radius 0.03 --target-count 10
+expect tune-bad-method 2 "method" -- "$bin" tune --radius 0.03 --target-count 900 --method fancy
+expect tune-wrong-radius 2 "m.csv:2: radius 0.03 differs" -- "$bin" tune --radius 0.02 --input m.csv --target-count 2000
+printf 'x,y,r\n0.5,0.5,0.03\n0.51,0.5,0.03\n' >conflict.csv
+expect tune-conflict 2 "closer than r" -- "$bin" tune --radius 0.03 --input conflict.csv --target-count 900
+printf 'x,y,r\n0.5,0.5,0.03\n' >sparse.csv
+expect tune-not-maximal 2 "not maximal" -- "$bin" tune --radius 0.03 --input sparse.csv --target-count 900
+printf 'x,y,r\n1.5,0.5,0.03\n' >outside.csv
+expect tune-outside 2 "outside the 1 x 1 box" -- "$bin" tune --radius 0.03 --input outside.csv --target-count 900
+absent tune-refused-output never.csv
+
 expect demo 0 "sample: [0-9]+ disks" -- "$bin"
 [ -s disktune-demo/mps.csv ] && [ -s disktune-demo/mps.svg ] && pass=$((pass + 1)) || { echo "FAIL demo files"; fails=$((fails + 1)); }
 

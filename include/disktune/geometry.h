@@ -2,6 +2,7 @@
 // Small value types and robust circle primitives.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -39,5 +40,22 @@ struct CircleIntersection {
 /// clamped at zero when it is negative by no more than rounding, so near-tangent circles
 /// give their touching point instead of nothing or NaN.
 CircleIntersection intersect_circles(Vec2 c1, double r1, Vec2 c2, double r2);
+
+/// False only when no intersection point of the two circles lies in the closed disk
+/// D(center, R): a square-root-free test (the points are m +- h n, with m the chord's
+/// midpoint, h its half-length and n its unit normal) that lets corner searches skip
+/// most circle pairs before computing anything.
+inline bool intersections_may_lie_in(Vec2 c1, double r1, Vec2 c2, double r2, Vec2 center, double R) {
+  const Vec2 u = c2 - c1;
+  const double d2 = squared_norm(u);
+  if (d2 == 0.0) return false;
+  const double a = 0.5 + (r1 * r1 - r2 * r2) / (2.0 * d2);
+  const double h2 = r1 * r1 - a * a * d2;  // squared half-chord (negative: no points)
+  const Vec2 mc = c1 + u * a - center;
+  const double s = squared_norm(mc) + std::max(h2, 0.0) - R * R;
+  if (s <= 0) return true;
+  const double n_mc = dot(perp(u), mc);    // |u| (n . mc)
+  return s * s * d2 <= 4 * std::max(h2, 0.0) * n_mc * n_mc * (1 + 1e-9);
+}
 
 }  // namespace disktune

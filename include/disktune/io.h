@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "disktune/packing.h"
+#include "disktune/periodic_box.h"
 
 namespace disktune {
 
@@ -27,6 +28,12 @@ struct PointRecord {
 /// Reads a CSV written by write_points_csv (header `x,y,r`). Throws IoError when the
 /// file cannot be read and InvalidInput, naming the line, when its content is wrong.
 std::vector<PointRecord> read_points_csv(const std::string& path);
+
+/// Reads a CSV of disks (header `x,y,r`) into a packing of `box` with uniform radius r.
+/// Throws InvalidInput, naming the line, when a center lies outside the box or a radius
+/// differs from r; IoError when the file cannot be read. It does not check conflicts
+/// or maximality (see validate_packing in voids.h).
+Packing read_packing_csv(const std::string& path, const PeriodicBox& box, double r);
 
 struct SvgStyle {
   double pixels = 800;  ///< width of the picture in pixels

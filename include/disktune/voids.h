@@ -5,6 +5,7 @@
 // isolated, so corners are both how voids are found and how maximality is certified.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "disktune/geometry.h"
@@ -35,5 +36,10 @@ void corners_in_region(const Packing& packing, Vec2 center, double R,
 /// True when no corner of the whole packing is uncovered and no circle is isolated:
 /// the packing is maximal (up to the tolerance). Linear time.
 bool is_maximal(const Packing& packing);
+
+/// Throws InvalidInput unless the packing is non-empty, conflict-free and maximal,
+/// naming a conflicting pair or an uncovered point; `what` names the input in the
+/// message (e.g. a file name). Linear time.
+void validate_packing(const Packing& packing, const std::string& what);
 
 }  // namespace disktune

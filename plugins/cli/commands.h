@@ -5,15 +5,39 @@
 
 #include <CLI/CLI.hpp>
 #include <functional>
+#include <cstdint>
 #include <string>
+
+#include "disktune/tuning.h"
 
 namespace disktune::cli {
 
-enum ExitCode : int { kExitOk = 0, kExitInternal = 1, kExitUsage = 2, kExitIo = 3 };
+/// Exit codes: 4 is not an error but a result (the target could not be reached; the
+/// closest packing was still written).
+enum ExitCode : int { kExitOk = 0, kExitInternal = 1, kExitUsage = 2, kExitIo = 3, kExitNotReached = 4 };
 
 using Action = std::function<int()>;
 
 void add_sample_command(CLI::App& app, Action& action);
+void add_tune_command(CLI::App& app, Action& action);
+
+/// One sampling job, as `disktune sample` and the demo run it.
+struct SampleJob {
+  double width = 1, height = 1, radius = 0;
+  std::uint64_t seed = 1;
+  std::string output, svg;
+};
+int run_sample(const SampleJob& job);
+
+/// One tuning job, as `disktune tune` and the demo run it.
+struct TuneJob {
+  double width = 1, height = 1, radius = 0;
+  Target target;
+  Method method = Method::automatic;
+  std::string input, output, svg;
+  std::uint64_t seed = 1;
+};
+int run_tune(const TuneJob& job);
 
 /// The built-in default job, run by `disktune` with no arguments.
 int run_demo();

@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(0, 1);
   Action action = run_demo;
   add_sample_command(app, action);
+  add_tune_command(app, action);
 
   try {
     app.parse(argc, argv);

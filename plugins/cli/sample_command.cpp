@@ -16,32 +16,29 @@ namespace {
 
 struct SampleArgs {
   std::string domain = "periodic";
-  double width = 1, height = 1;
-  double radius = 0;
-  std::uint64_t seed = 1;
-  std::string output, svg;
+  SampleJob job;
 };
 
-int run_sample(const SampleArgs& args) {
-  check_output_folder(args.output);
-  check_output_folder(args.svg);
-  const PeriodicBox box(args.width, args.height);
-  box.validate_radius(args.radius);
-  Rng rng(args.seed);
+}  // namespace
+
+int run_sample(const SampleJob& job) {
+  check_output_folder(job.output);
+  check_output_folder(job.svg);
+  const PeriodicBox box(job.width, job.height);
+  box.validate_radius(job.radius);
+  Rng rng(job.seed);
   const auto t0 = std::chrono::steady_clock::now();
-  const Packing packing = sample_mps(box, args.radius, rng);
+  const Packing packing = sample_mps(box, job.radius, rng);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  if (!args.output.empty()) write_points_csv(args.output, packing);
-  if (!args.svg.empty()) write_packing_svg(args.svg, packing);
+  if (!job.output.empty()) write_points_csv(job.output, packing);
+  if (!job.svg.empty()) write_packing_svg(job.svg, packing);
   std::printf("sample: %zu disks, eta = %.4f, rho = %.4f, %.3f s (r = %g, %g x %g periodic box)%s%s\n",
-              packing.size(), area_fraction(packing.size(), args.radius, box.area()),
-              relative_radius(packing.size(), args.radius, box.area()), seconds, args.radius,
-              box.width(), box.height(), args.output.empty() ? "" : " -> ",
-              args.output.c_str());
+              packing.size(), area_fraction(packing.size(), job.radius, box.area()),
+              relative_radius(packing.size(), job.radius, box.area()), seconds, job.radius,
+              box.width(), box.height(), job.output.empty() ? "" : " -> ",
+              job.output.c_str());
   return kExitOk;
 }
-
-}  // namespace
 
 void check_output_folder(const std::string& path) {
   if (path.empty()) return;
@@ -58,27 +55,17 @@ void add_sample_command(CLI::App& app, Action& action) {
   cmd->add_option("--domain", args->domain, "Domain kind; only 'periodic' (a periodic box) for now")
       ->check(CLI::IsMember({"periodic"}))
       ->capture_default_str();
-  cmd->add_option("--width", args->width, "Width W of the periodic box")->capture_default_str();
-  cmd->add_option("--height", args->height, "Height H of the periodic box")->capture_default_str();
-  cmd->add_option("--radius,-r", args->radius,
+  cmd->add_option("--width", args->job.width, "Width W of the periodic box")->capture_default_str();
+  cmd->add_option("--height", args->job.height, "Height H of the periodic box")->capture_default_str();
+  cmd->add_option("--radius,-r", args->job.radius,
                   "Conflict radius r: no center closer than r to another; every point within r "
                   "of a center. Needs 0 < r < min(W,H)/2")
       ->required();
-  cmd->add_option("--seed", args->seed, "Random seed; the same seed gives the same output")
+  cmd->add_option("--seed", args->job.seed, "Random seed; the same seed gives the same output")
       ->capture_default_str();
-  cmd->add_option("--output,-o", args->output, "CSV file to write (header x,y,r)");
-  cmd->add_option("--svg", args->svg, "Also draw the packing as an SVG picture");
-  cmd->callback([args, &action] { action = [args] { return run_sample(*args); }; });
-}
-
-int run_demo() {
-  std::filesystem::create_directories("disktune-demo");
-  SampleArgs args;
-  args.radius = 0.01;
-  args.output = "disktune-demo/mps.csv";
-  args.svg = "disktune-demo/mps.svg";
-  std::printf("disktune demo: MPS of the unit periodic square at r = 0.01 (see disktune --help)\n");
-  return run_sample(args);
+  cmd->add_option("--output,-o", args->job.output, "CSV file to write (header x,y,r)");
+  cmd->add_option("--svg", args->job.svg, "Also draw the packing as an SVG picture");
+  cmd->callback([args, &action] { action = [args] { return run_sample(args->job); }; });
 }
 
 }  // namespace disktune::cli

@@ -81,4 +81,27 @@ std::vector<PointRecord> read_points_csv(const std::string& path) {
   return out;
 }
 
+Packing read_packing_csv(const std::string& path, const PeriodicBox& box, double r) {
+  box.validate_radius(r);
+  const std::vector<PointRecord> records = read_points_csv(path);
+  Packing packing(box.frame(), r);
+  for (std::size_t k = 0; k < records.size(); ++k) {
+    const PointRecord& p = records[k];
+    std::ostringstream where;
+    where << path << ":" << k + 2 << ": ";  // line 1 is the header
+    if (!(p.x >= 0 && p.x < box.width() && p.y >= 0 && p.y < box.height())) {
+      where << "center (" << p.x << ", " << p.y << ") lies outside the " << box.width() << " x "
+            << box.height() << " box; give the box with --width and --height";
+      throw InvalidInput(where.str());
+    }
+    if (std::abs(p.r - r) > kRelTol * r) {
+      where << "radius " << p.r << " differs from the radius " << r
+            << " asked for; disktune tunes uniform-radius packings: pass --radius " << p.r;
+      throw InvalidInput(where.str());
+    }
+    packing.insert({p.x, p.y}, r);
+  }
+  return packing;
+}
+
 }  // namespace disktune

@@ -1,5 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <algorithm>
+#include <sstream>
+
+#include "disktune/errors.h"
 
 #include "disktune/voids.h"
 
@@ -60,6 +63,10 @@ void corners_in_region(const Packing& packing, Vec2 center, double R,
   const double lim = R * (1 + kRelTol);
   for (std::size_t i = 0; i < near.size(); ++i) {
     for (std::size_t j = i + 1; j < near.size(); ++j) {
+      if (!intersections_may_lie_in(near[i].image, near[i].radius, near[j].image, near[j].radius,
+                                    center, lim)) {
+        continue;
+      }
       const CircleIntersection x =
           intersect_circles(near[i].image, near[i].radius, near[j].image, near[j].radius);
       for (int k = 0; k < x.count; ++k) {
@@ -68,6 +75,37 @@ void corners_in_region(const Packing& packing, Vec2 center, double R,
           out.push_back({pt, near[i].id, near[j].id});
         }
       }
+    }
+  }
+}
+
+void validate_packing(const Packing& packing, const std::string& what) {
+  std::ostringstream msg;
+  msg << what << ": ";
+  if (packing.empty()) {
+    msg << "holds no disks";
+    throw InvalidInput(msg.str());
+  }
+  std::vector<Corner> corners;
+  for (DiskId id = 0; id < packing.id_bound(); ++id) {
+    if (!packing.alive(id)) continue;
+    const Vec2 c = packing.center(id);
+    DiskId other = kNoDisk;
+    packing.any_near(c, packing.max_radius(), [&](const Neighbor& n) {
+      if (n.id != id && is_conflict(n.d2, packing.radius(id))) other = n.id;
+      return other != kNoDisk;
+    });
+    if (other != kNoDisk) {
+      msg << "disks at (" << c.x << ", " << c.y << ") and (" << packing.center(other).x << ", "
+          << packing.center(other).y << ") are closer than r: not a packing";
+      throw InvalidInput(msg.str());
+    }
+    corners_on_circle(packing, id, corners);
+    if (!corners.empty()) {
+      const Vec2 hole = packing.frame().wrap(corners.front().point);
+      msg << "not maximal: the point (" << hole.x << ", " << hole.y
+          << ") is covered by no disk; start from a maximal sample ('disktune sample')";
+      throw InvalidInput(msg.str());
     }
   }
 }

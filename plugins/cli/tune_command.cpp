@@ -1,0 +1,127 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// `disktune tune`: from an MPS (made here, or read with --input) to exactly the
+// number of disks asked for, by disk injection.
+#include <chrono>
+#include <cstdio>
+#include <memory>
+
+#include "commands.h"
+#include "disktune/density.h"
+#include "disktune/errors.h"
+#include "disktune/io.h"
+#include "disktune/sampling.h"
+#include "disktune/tuning.h"
+#include "disktune/voids.h"
+#include "progress_bar.h"
+
+namespace disktune::cli {
+namespace {
+
+struct TuneArgs {
+  std::string domain = "periodic";
+  double width = 1, height = 1;
+  double radius = 0;
+  std::size_t target_count = 0;
+  double target_fraction = 0, target_rho = 0;
+  std::string method = "auto";
+  std::string input, output, svg;
+  std::uint64_t seed = 1;
+};
+
+Method method_named(const std::string& name) {
+  if (name == "void") return Method::void_injection;
+  if (name == "repeller") return Method::repeller_injection;
+  if (name == "crystal") return Method::crystal_injection;
+  return Method::automatic;
+}
+
+}  // namespace
+
+int run_tune(const TuneJob& job) {
+  check_output_folder(job.output);
+  check_output_folder(job.svg);
+  const PeriodicBox box(job.width, job.height);
+  box.validate_radius(job.radius);
+  const std::size_t target = target_count(job.target, job.radius, box.area());  // fail early
+  Rng rng(job.seed);
+  const auto t0 = std::chrono::steady_clock::now();
+  Packing packing = job.input.empty() ? sample_mps(box, job.radius, rng)
+                                      : read_packing_csv(job.input, box, job.radius);
+  if (!job.input.empty()) validate_packing(packing, job.input);
+  const std::size_t start = packing.size();
+
+  ProgressBar bar;
+  TuneOptions options;
+  options.method = job.method;
+  options.on_progress = [&](const Progress& p) {
+    char status[96];
+    std::snprintf(status, sizeof status, "%zu/%zu disks, eta %.4f, %s", p.count, target,
+                  p.area_fraction, to_string(p.phase).c_str());
+    bar.update(static_cast<double>(p.count) - start, static_cast<double>(target) - start, status);
+  };
+  const TuneResult res = tune(packing, box, job.target, rng, options);
+  bar.clear();
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+
+  if (!job.output.empty()) write_points_csv(job.output, packing);
+  if (!job.svg.empty()) write_packing_svg(job.svg, packing);
+  std::printf("tune: %zu -> %zu disks (target %zu%s), eta = %.4f, rho = %.4f, phase %s, %.3f s%s%s\n",
+              start, res.count, res.target, res.reached ? ", reached" : ", NOT reached",
+              area_fraction(res.count, job.radius, box.area()),
+              relative_radius(res.count, job.radius, box.area()), to_string(res.last_phase).c_str(),
+              seconds, job.output.empty() ? "" : " -> ", job.output.c_str());
+  if (!res.reached) {
+    std::fprintf(stderr,
+                 "disktune: the target was not reached: no phase makes progress beyond %zu disks "
+                 "(eta %.4f); the closest packing was written\n",
+                 res.count, area_fraction(res.count, job.radius, box.area()));
+    return kExitNotReached;
+  }
+  return kExitOk;
+}
+
+void add_tune_command(CLI::App& app, Action& action) {
+  auto args = std::make_shared<TuneArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "tune", "Tune a maximal packing to exactly the number of disks asked for (disk injection).");
+  cmd->add_option("--domain", args->domain, "Domain kind; only 'periodic' (a periodic box) for now")
+      ->check(CLI::IsMember({"periodic"}))
+      ->capture_default_str();
+  cmd->add_option("--width", args->width, "Width W of the periodic box")->capture_default_str();
+  cmd->add_option("--height", args->height, "Height H of the periodic box")->capture_default_str();
+  cmd->add_option("--radius,-r", args->radius, "Conflict radius r (as for 'sample')")->required();
+  auto* count = cmd->add_option("--target-count", args->target_count, "Exact number of disks wanted");
+  auto* fraction = cmd->add_option("--target-fraction", args->target_fraction,
+                                   "Area fraction eta = N pi (r/2)^2 / A wanted (MPS ~0.547, hex 0.9069)");
+  auto* rho = cmd->add_option("--target-rho", args->target_rho,
+                              "Relative radius rho = r / sqrt(2A / (sqrt(3) N)) wanted (below 1)");
+  count->excludes(fraction)->excludes(rho);
+  fraction->excludes(rho);
+  cmd->add_option("--method", args->method,
+                  "auto: void, then repeller, then crystal injection (switching at eta 0.75 and "
+                  "0.79, or when a phase stalls); or one of them alone")
+      ->check(CLI::IsMember({"auto", "void", "repeller", "crystal"}))
+      ->capture_default_str();
+  cmd->add_option("--input,-i", args->input,
+                  "Start from this CSV (x,y,r; a conflict-free maximal packing) instead of a new MPS");
+  cmd->add_option("--seed", args->seed, "Random seed; the same seed gives the same output")
+      ->capture_default_str();
+  cmd->add_option("--output,-o", args->output, "CSV file to write (header x,y,r)");
+  cmd->add_option("--svg", args->svg, "Also draw the packing (frozen crystal disks in blue)");
+  cmd->callback([args, cmd, &action] {
+    if (cmd->count("--target-count") + cmd->count("--target-fraction") + cmd->count("--target-rho") != 1) {
+      throw CLI::ValidationError("tune", "give one target: --target-count, --target-fraction or --target-rho");
+    }
+    TuneJob job;
+    job.width = args->width, job.height = args->height, job.radius = args->radius;
+    job.target = cmd->count("--target-count") ? Target::count(args->target_count)
+                 : cmd->count("--target-fraction") ? Target::area_fraction(args->target_fraction)
+                                                   : Target::relative_radius(args->target_rho);
+    job.method = method_named(args->method);
+    job.input = args->input, job.output = args->output, job.svg = args->svg;
+    job.seed = args->seed;
+    action = [job] { return run_tune(job); };
+  });
+}
+
+}  // namespace disktune::cli
