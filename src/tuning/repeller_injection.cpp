@@ -32,6 +32,7 @@ std::size_t repeller_inject(Packing& packing, DiskId p, Rng& rng, std::size_t ma
     });
     detail::UndoLog log(packing);
     log.move(q.id, far->point);
+    if (detail::covers_all(far->point, r, corners)) continue;  // no gap opened
     const std::size_t added = detail::repair_void(log, packing, q.image, r, rng, max_added);
     if (added > max_added) {
       log.revert();

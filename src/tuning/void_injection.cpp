@@ -18,6 +18,13 @@ std::pair<std::size_t, std::size_t> diameter_pair(const std::vector<Corner>& cor
   return best;
 }
 
+bool covers_all(Vec2 c, double r, const std::vector<Corner>& corners) {
+  for (const Corner& k : corners) {
+    if (!is_covered(squared_distance(c, k.point), r)) return false;
+  }
+  return true;
+}
+
 // One end of the diameter pair, chosen at random: a fixed choice would add a
 // direction bias to every injected disk.
 static Vec2 diameter_corner(const std::vector<Corner>& corners, Rng& rng) {
@@ -47,7 +54,9 @@ std::size_t void_inject(Packing& packing, DiskId p, Rng& rng, std::size_t max_ad
   corners_in_region(packing, c, r, {p}, corners);
   if (corners.empty()) return 0;  // no room: p's void is a point
   detail::UndoLog log(packing);
-  log.move(p, detail::diameter_corner(corners, rng));
+  const Vec2 to = detail::diameter_corner(corners, rng);
+  log.move(p, to);
+  if (detail::covers_all(to, r, corners)) return 0;  // diameter below r: the void is covered
   const std::size_t added = detail::repair_void(log, packing, c, r, rng, max_added);
   if (added > max_added) {
     log.revert();

@@ -15,6 +15,10 @@ namespace disktune::detail {
 /// Indices of the two corners farthest apart (i == j when there is one corner).
 std::pair<std::size_t, std::size_t> diameter_pair(const std::vector<Corner>& corners);
 
+/// True when the disk D(c, r) contains every corner: then it covers the whole void they
+/// bound (a void lies in the convex hull of its corners), and nothing needs repair.
+bool covers_all(Vec2 c, double r, const std::vector<Corner>& corners);
+
 /// Restores maximality inside D(center, r) after a disk there was lifted or moved: while
 /// the region holds uncovered corners, injects a disk at one end of their diameter pair
 /// (paper, 2.1). Corners are the only place voids can hide: everything outside the

@@ -60,6 +60,9 @@ void corners_in_region(const Packing& packing, Vec2 center, double R,
   packing.for_each_near(center, (R + rmax) * (1 + 2 * kRelTol), [&](const Neighbor& n) {
     if (!contains(ignore, n.id)) near.push_back(n);
   });
+  // Nearest first: the disks closest to the region cover most of it, so coverage tests
+  // stop early.
+  std::sort(near.begin(), near.end(), [](const Neighbor& a, const Neighbor& b) { return a.d2 < b.d2; });
   const double lim = R * (1 + kRelTol);
   for (std::size_t i = 0; i < near.size(); ++i) {
     for (std::size_t j = i + 1; j < near.size(); ++j) {

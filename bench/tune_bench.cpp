@@ -1,0 +1,79 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// disktune-tune-bench: from an MPS of the unit periodic square, the time at which
+// disk injection first reaches each area fraction of a list, against CGAL's Delaunay
+// triangulation of as many points, timed in the same run. The phases' path does not
+// depend on the target (only where it stops), so one run to the largest fraction times
+// them all.
+//
+//   disktune-tune-bench [--radius R] [--method auto|void|repeller|crystal] [ETA ...]
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "delaunay_floor.h"
+#include "disktune/density.h"
+#include "disktune/sampling.h"
+#include "disktune/tuning.h"
+
+using namespace disktune;
+
+int main(int argc, char** argv) {
+  double r = 0.0025;
+  Method method = Method::automatic;
+  std::string method_name = "auto";
+  std::vector<double> etas;
+  for (int i = 1; i < argc; ++i) {
+    if (!std::strcmp(argv[i], "--radius") && i + 1 < argc) {
+      r = std::atof(argv[++i]);
+    } else if (!std::strcmp(argv[i], "--method") && i + 1 < argc) {
+      method_name = argv[++i];
+      method = method_name == "void"       ? Method::void_injection
+               : method_name == "repeller" ? Method::repeller_injection
+               : method_name == "crystal"  ? Method::crystal_injection
+                                           : Method::automatic;
+    } else {
+      etas.push_back(std::atof(argv[i]));
+    }
+  }
+  if (etas.empty()) etas = {0.75, 0.80, 0.85, 0.89};
+
+  const PeriodicBox box;
+  Rng rng(1);
+  auto t0 = std::chrono::steady_clock::now();
+  Packing packing = sample_mps(box, r, rng);
+  const double mps_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::printf("injection from an MPS of the unit periodic square, r = %g, method %s\n", r,
+              method_name.c_str());
+  std::printf("MPS: %zu disks, eta %.4f, %.3f s\n", packing.size(),
+              area_fraction(packing.size(), r, 1.0), mps_s);
+  std::printf("%8s %10s %12s %12s %10s  %s\n", "eta", "disks", "tune_s", "delaunay_s", "ratio", "phase");
+
+  std::size_t next = 0;
+  TuneOptions options;
+  options.method = method;
+  t0 = std::chrono::steady_clock::now();
+  std::vector<std::pair<double, Progress>> reached;  // time and state at each crossing
+  options.on_progress = [&](const Progress& p) {
+    while (next < etas.size() && p.count >= count_for_area_fraction(etas[next], r, 1.0)) {
+      reached.push_back({std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), p});
+      ++next;
+    }
+  };
+  const TuneResult res = tune(packing, box, Target::area_fraction(etas.back()), rng, options);
+  options.on_progress({res.count, area_fraction(res.count, r, 1.0), res.last_phase});
+  for (std::size_t k = 0; k < etas.size(); ++k) {
+    if (k >= reached.size()) {
+      std::printf("%8.3f %10s %12s %12s %10s  not reached (stopped at eta %.4f)\n", etas[k], "-", "-", "-", "-",
+                  area_fraction(res.count, r, 1.0));
+      continue;
+    }
+    const auto& [t, p] = reached[k];
+    const double dt = bench::delaunay_seconds(p.count, 3, 99);
+    std::printf("%8.3f %10zu %12.2f %12.4f %10.1f  %s\n", etas[k], p.count, t, dt, t / dt,
+                to_string(p.phase).c_str());
+  }
+  return 0;
+}
