@@ -33,6 +33,7 @@ int main(int argc, char** argv) {
       method = method_name == "void"       ? Method::void_injection
                : method_name == "repeller" ? Method::repeller_injection
                : method_name == "crystal"  ? Method::crystal_injection
+               : method_name == "angle"    ? Method::angle_injection
                                            : Method::automatic;
     } else {
       etas.push_back(std::atof(argv[i]));

@@ -44,6 +44,7 @@ absent zero-radius-output z.csv
 expect nan-radius 2 "radius must be" -- "$bin" sample --radius nan --output z.csv
 expect big-radius 2 "meet its own periodic image" -- "$bin" sample --radius 0.5 --output z.csv
 absent big-radius-output z.csv
+expect tiny-radius 2 "too small" -- "$bin" sample --radius 1e-7 --output z.csv
 expect bad-box 2 "width and height must be" -- "$bin" sample --width -1 --radius 0.1
 expect no-radius 2 "radius" -- "$bin" sample --output z.csv
 expect unknown-option 2 "--frobnicate|frobnicate" -- "$bin" sample --radius 0.1 --frobnicate
@@ -71,6 +72,7 @@ expect tune-no-target 2 "give one target" -- "$bin" tune --radius 0.03
 expect tune-too-dense 2 "densest packing" -- "$bin" tune --radius 0.03 --target-count 5000
 expect tune-below 2 "ejection" -- "$bin" tune --radius 0.03 --target-count 10
 expect tune-bad-method 2 "method" -- "$bin" tune --radius 0.03 --target-count 900 --method fancy
+expect tune-angle 0 "reached" -- "$bin" tune --radius 0.03 --target-fraction 0.7 --method angle
 expect tune-wrong-radius 2 "m.csv:2: radius 0.03 differs" -- "$bin" tune --radius 0.02 --input m.csv --target-count 2000
 printf 'x,y,r\n0.5,0.5,0.03\n0.51,0.5,0.03\n' >conflict.csv
 expect tune-conflict 2 "closer than r" -- "$bin" tune --radius 0.03 --input conflict.csv --target-count 900
@@ -82,6 +84,33 @@ absent tune-refused-output never.csv
 
 expect demo 0 "sample: [0-9]+ disks" -- "$bin"
 [ -s disktune-demo/mps.csv ] && [ -s disktune-demo/mps.svg ] && pass=$((pass + 1)) || { echo "FAIL demo files"; fails=$((fails + 1)); }
+
+# mesh and report: mesh files, the quality report, refusals, no partial files.
+"$bin" sample --radius 0.05 --seed 5 --output q.csv >/dev/null
+n=$(($(wc -l <q.csv) - 1))
+expect mesh-off 0 "^mesh: $n disks, $((2 * n)) triangles" -- "$bin" mesh q.csv --radius 0.05 --output q.off
+sed -n 2p q.off | grep -qE "^[0-9]+ $((2 * n)) 0$" && pass=$((pass + 1)) || { echo "FAIL mesh OFF header"; fails=$((fails + 1)); }
+expect mesh-obj 0 "-> q.obj" -- "$bin" mesh q.csv --radius 0.05 --output q.obj
+expect mesh-vtk 0 "-> q.vtk" -- "$bin" mesh q.csv --radius 0.05 --output q.vtk
+head -n 1 q.vtk | grep -qx "# vtk DataFile Version 3.0" && pass=$((pass + 1)) || { echo "FAIL VTK header"; fails=$((fails + 1)); }
+expect mesh-bad-extension 2 "supported: \.off, \.obj, \.vtk" -- "$bin" mesh q.csv --radius 0.05 --output q.ply
+absent mesh-bad-extension-output q.ply
+expect mesh-no-output 2 "output" -- "$bin" mesh q.csv --radius 0.05
+printf 'x,y,r\n0.5,0.5,0.05\n0.2,0.7,0.05\n0.5,0.5,0.05\n' >twice.csv
+expect mesh-same-center 2 "coincide" -- "$bin" mesh twice.csv --radius 0.05 --output never.off
+absent mesh-refused-output never.off
+expect report 0 "^report: $n disks, eta = 0\.5[0-9]+, rho = [0-9.]+, maximal, conflict-free" -- "$bin" report q.csv --radius 0.05 --json q.json --svg q.svg
+grep -q '"local_beta"' q.json && tail -n 1 q.svg | grep -qx "</svg>" && pass=$((pass + 1)) || { echo "FAIL report files"; fails=$((fails + 1)); }
+expect report-rect 0 "maximal, conflict-free" -- "$bin" report c.csv --width 2 --height 0.5 --radius 0.1
+expect report-outside 2 "outside the 1 x 1 box" -- "$bin" report c.csv --radius 0.1 --json never.json
+absent report-refused-output never.json
+expect report-wrong-radius 2 "differs" -- "$bin" report q.csv --radius 0.04 --json never.json
+printf 'x,y,r\n0.5,0.5,0.05\n0.52,0.5,0.05\n' >close.csv
+expect report-not-a-packing 0 "NOT maximal, CONFLICTS" -- "$bin" report close.csv --radius 0.05
+printf 'x,y,r\n' >empty.csv
+expect report-empty 2 "empty.csv. holds no disks" -- "$bin" report empty.csv --radius 0.05
+expect report-missing 3 "cannot read" -- "$bin" report no-such.csv --radius 0.05
+expect report-bad-folder 3 "does not exist" -- "$bin" report q.csv --radius 0.05 --json no/such/q.json
 
 echo "$pass passed, $fails failed"
 [ "$fails" -eq 0 ]

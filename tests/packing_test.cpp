@@ -127,6 +127,8 @@ TEST(PeriodicBox, RejectsBadSizesAndRadii) {
   EXPECT_THROW(box.validate_radius(INFINITY), InvalidInput);
   EXPECT_THROW(box.validate_radius(0.25), InvalidInput);  // 2r = H: meets its own image
   EXPECT_NO_THROW(box.validate_radius(0.2499));
+  EXPECT_THROW(box.validate_radius(1e-6), InvalidInput);  // ~3.5e11 disks: refused, not a crash
+  EXPECT_NO_THROW(box.validate_radius(1e-4));
 }
 
 }  // namespace

@@ -82,6 +82,30 @@ TEST(Corners, CocircularSquareIsCoveredOnlyWithinTheTolerance) {
   EXPECT_TRUE(corners_for(r0 * (1 + 1e-6)).empty());
 }
 
+TEST(Corners, ATripleCornerIsAVoidCornerUnlessItsCirclesSurroundIt) {
+  // Three circles through one point c: their disks cover a neighbourhood of c only when
+  // the directions to their centers are not all in one half-plane. Injection makes such
+  // points (disks sit exactly r from the corners they were built from); a tolerance
+  // test alone would call c covered either way and miss the void.
+  const PeriodicBox box;
+  const double r = 0.1;
+  const Vec2 c{0.5, 0.5};
+  auto corners_at_c = [&](std::initializer_list<double> degrees) {
+    Packing p(box.frame(), r);
+    for (const double deg : degrees) {
+      const double a = deg * 3.14159265358979323846 / 180;
+      p.insert(c + Vec2{std::cos(a), std::sin(a)} * r, r);
+    }
+    std::vector<Corner> out;
+    corners_in_region(p, c, 1e-6, {}, out);
+    return out.size();
+  };
+  EXPECT_GT(corners_at_c({0, 60, 120}), 0u);    // the wedge between 120 and 360 is void
+  EXPECT_GT(corners_at_c({10, 95, 185}), 0u);   // a gap of 185 degrees: still a wedge
+  EXPECT_EQ(corners_at_c({0, 120, 240}), 0u);   // surrounded: covered
+  EXPECT_EQ(corners_at_c({0, 90, 175, 270}), 0u);
+}
+
 TEST(Corners, OnCircleFindsIsolatedDisksAndTheirCorners) {
   const PeriodicBox box;
   Packing p(box.frame(), 0.1);

@@ -32,13 +32,14 @@ struct Target {
 std::size_t target_count(const Target& target, double r, double area);
 
 /// The operations, and the phases of the scheduler that run them.
-enum class Phase { none, void_injection, repeller_injection, crystal_injection };
+enum class Phase { none, void_injection, repeller_injection, crystal_injection, angle_injection };
 std::string to_string(Phase phase);
 
 /// How `tune` picks operations: `automatic` runs the phases in the paper's order,
 /// switching at the area-fraction thresholds or when a phase stops making progress;
-/// the others run one phase alone.
-enum class Method { automatic, void_injection, repeller_injection, crystal_injection };
+/// the others run one phase alone (angle injection is not part of the automatic
+/// schedule: the paper offers it as an alternative that targets obtuse triangles).
+enum class Method { automatic, void_injection, repeller_injection, crystal_injection, angle_injection };
 
 struct Progress {
   std::size_t count;
@@ -91,6 +92,12 @@ std::size_t void_inject(Packing& packing, DiskId p, Rng& rng, std::size_t max_ad
 /// p until a gap opens, inject there; otherwise void-inject p.
 std::size_t repeller_inject(Packing& packing, DiskId p, Rng& rng, std::size_t max_added);
 
+/// The repeller step alone, around any point: the disks within 2r of `point` (except
+/// `self`, the disk at the point if there is one), in random order, each moved to the
+/// corner of its own void farthest from the point, until one leaves a gap, which is
+/// filled. Returns the number of disks added (0: every disk moved, no gap).
+std::size_t repel_from(Packing& packing, Vec2 point, DiskId self, Rng& rng, std::size_t max_added);
+
 /// Crystal-growth injection (2.3): grows one hexagonal crystal of frozen disks from a
 /// seed pair at distance r over the whole domain; each step moves a mobile disk onto
 /// an attractor site (deleting the disks it would conflict with and refilling their
@@ -99,5 +106,12 @@ std::size_t repeller_inject(Packing& packing, DiskId p, Rng& rng, std::size_t ma
 /// that changed the packing. Returns the number of disks added.
 std::size_t crystal_inject(Packing& packing, Rng& rng, std::size_t max_added,
                            const std::function<void()>& after_step = {});
+
+/// Injection for angles (2.4), one sweep: the circumcenter of every obtuse triangle of
+/// the periodic Delaunay triangulation, in random order, is used as a repeller point
+/// (triangles whose disks moved meanwhile wait for the next sweep). Returns the number
+/// of disks added; `after_step` runs after each repeller step.
+std::size_t angle_inject(Packing& packing, Rng& rng, std::size_t max_added,
+                         const std::function<void()>& after_step = {});
 
 }  // namespace disktune

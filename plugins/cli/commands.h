@@ -18,12 +18,21 @@ enum ExitCode : int { kExitOk = 0, kExitInternal = 1, kExitUsage = 2, kExitIo = 
 
 using Action = std::function<int()>;
 
+/// The domain options every command shares: --domain, --width, --height, --radius.
+struct DomainArgs {
+  std::string kind = "periodic";
+  double width = 1, height = 1, radius = 0;
+};
+void add_domain_options(CLI::App* cmd, DomainArgs& domain);
+
 void add_sample_command(CLI::App& app, Action& action);
 void add_tune_command(CLI::App& app, Action& action);
+void add_mesh_command(CLI::App& app, Action& action);
+void add_report_command(CLI::App& app, Action& action);
 
 /// One sampling job, as `disktune sample` and the demo run it.
 struct SampleJob {
-  double width = 1, height = 1, radius = 0;
+  DomainArgs domain;
   std::uint64_t seed = 1;
   std::string output, svg;
 };
@@ -31,7 +40,7 @@ int run_sample(const SampleJob& job);
 
 /// One tuning job, as `disktune tune` and the demo run it.
 struct TuneJob {
-  double width = 1, height = 1, radius = 0;
+  DomainArgs domain;
   Target target;
   Method method = Method::automatic;
   std::string input, output, svg;

@@ -12,13 +12,13 @@ int run_demo() {
   std::printf("disktune demo: an MPS of the unit periodic square at r = 0.01, tuned to eta = 0.80 "
               "(see disktune --help)\n");
   SampleJob sample;
-  sample.radius = 0.01;
+  sample.domain.radius = 0.01;
   sample.output = "disktune-demo/mps.csv";
   sample.svg = "disktune-demo/mps.svg";
   if (const int rc = run_sample(sample); rc != kExitOk) return rc;
 
   TuneJob tune;
-  tune.radius = sample.radius;
+  tune.domain = sample.domain;
   tune.target = Target::area_fraction(0.80);
   tune.input = sample.output;
   tune.output = "disktune-demo/tuned.csv";

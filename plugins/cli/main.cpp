@@ -16,6 +16,8 @@ int main(int argc, char** argv) {
   Action action = run_demo;
   add_sample_command(app, action);
   add_tune_command(app, action);
+  add_mesh_command(app, action);
+  add_report_command(app, action);
 
   try {
     app.parse(argc, argv);

@@ -12,29 +12,21 @@
 
 namespace disktune::cli {
 
-namespace {
-
-struct SampleArgs {
-  std::string domain = "periodic";
-  SampleJob job;
-};
-
-}  // namespace
-
 int run_sample(const SampleJob& job) {
   check_output_folder(job.output);
   check_output_folder(job.svg);
-  const PeriodicBox box(job.width, job.height);
-  box.validate_radius(job.radius);
+  const PeriodicBox box(job.domain.width, job.domain.height);
+  const double r = job.domain.radius;
+  box.validate_radius(r);
   Rng rng(job.seed);
   const auto t0 = std::chrono::steady_clock::now();
-  const Packing packing = sample_mps(box, job.radius, rng);
+  const Packing packing = sample_mps(box, r, rng);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (!job.output.empty()) write_points_csv(job.output, packing);
   if (!job.svg.empty()) write_packing_svg(job.svg, packing);
   std::printf("sample: %zu disks, eta = %.4f, rho = %.4f, %.3f s (r = %g, %g x %g periodic box)%s%s\n",
-              packing.size(), area_fraction(packing.size(), job.radius, box.area()),
-              relative_radius(packing.size(), job.radius, box.area()), seconds, job.radius,
+              packing.size(), area_fraction(packing.size(), r, box.area()),
+              relative_radius(packing.size(), r, box.area()), seconds, r,
               box.width(), box.height(), job.output.empty() ? "" : " -> ",
               job.output.c_str());
   return kExitOk;
@@ -48,24 +40,28 @@ void check_output_folder(const std::string& path) {
   }
 }
 
-void add_sample_command(CLI::App& app, Action& action) {
-  auto args = std::make_shared<SampleArgs>();
-  CLI::App* cmd = app.add_subcommand(
-      "sample", "Make a maximal Poisson-disk sample (MPS) and write it as CSV (x,y,r).");
-  cmd->add_option("--domain", args->domain, "Domain kind; only 'periodic' (a periodic box) for now")
+void add_domain_options(CLI::App* cmd, DomainArgs& domain) {
+  cmd->add_option("--domain", domain.kind, "Domain kind; only 'periodic' (a periodic box) for now")
       ->check(CLI::IsMember({"periodic"}))
       ->capture_default_str();
-  cmd->add_option("--width", args->job.width, "Width W of the periodic box")->capture_default_str();
-  cmd->add_option("--height", args->job.height, "Height H of the periodic box")->capture_default_str();
-  cmd->add_option("--radius,-r", args->job.radius,
+  cmd->add_option("--width", domain.width, "Width W of the periodic box")->capture_default_str();
+  cmd->add_option("--height", domain.height, "Height H of the periodic box")->capture_default_str();
+  cmd->add_option("--radius,-r", domain.radius,
                   "Conflict radius r: no center closer than r to another; every point within r "
                   "of a center. Needs 0 < r < min(W,H)/2")
       ->required();
-  cmd->add_option("--seed", args->job.seed, "Random seed; the same seed gives the same output")
+}
+
+void add_sample_command(CLI::App& app, Action& action) {
+  auto job = std::make_shared<SampleJob>();
+  CLI::App* cmd = app.add_subcommand(
+      "sample", "Make a maximal Poisson-disk sample (MPS) and write it as CSV (x,y,r).");
+  add_domain_options(cmd, job->domain);
+  cmd->add_option("--seed", job->seed, "Random seed; the same seed gives the same output")
       ->capture_default_str();
-  cmd->add_option("--output,-o", args->job.output, "CSV file to write (header x,y,r)");
-  cmd->add_option("--svg", args->job.svg, "Also draw the packing as an SVG picture");
-  cmd->callback([args, &action] { action = [args] { return run_sample(args->job); }; });
+  cmd->add_option("--output,-o", job->output, "CSV file to write (header x,y,r)");
+  cmd->add_option("--svg", job->svg, "Also draw the packing as an SVG picture");
+  cmd->callback([job, &action] { action = [job] { return run_sample(*job); }; });
 }
 
 }  // namespace disktune::cli

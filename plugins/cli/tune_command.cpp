@@ -18,9 +18,7 @@ namespace disktune::cli {
 namespace {
 
 struct TuneArgs {
-  std::string domain = "periodic";
-  double width = 1, height = 1;
-  double radius = 0;
+  DomainArgs domain;
   std::size_t target_count = 0;
   double target_fraction = 0, target_rho = 0;
   std::string method = "auto";
@@ -32,6 +30,7 @@ Method method_named(const std::string& name) {
   if (name == "void") return Method::void_injection;
   if (name == "repeller") return Method::repeller_injection;
   if (name == "crystal") return Method::crystal_injection;
+  if (name == "angle") return Method::angle_injection;
   return Method::automatic;
 }
 
@@ -40,13 +39,13 @@ Method method_named(const std::string& name) {
 int run_tune(const TuneJob& job) {
   check_output_folder(job.output);
   check_output_folder(job.svg);
-  const PeriodicBox box(job.width, job.height);
-  box.validate_radius(job.radius);
-  const std::size_t target = target_count(job.target, job.radius, box.area());  // fail early
+  const PeriodicBox box(job.domain.width, job.domain.height);
+  const double r = job.domain.radius;
+  box.validate_radius(r);
+  const std::size_t target = target_count(job.target, r, box.area());  // fail early
   Rng rng(job.seed);
   const auto t0 = std::chrono::steady_clock::now();
-  Packing packing = job.input.empty() ? sample_mps(box, job.radius, rng)
-                                      : read_packing_csv(job.input, box, job.radius);
+  Packing packing = job.input.empty() ? sample_mps(box, r, rng) : read_packing_csv(job.input, box, r);
   if (!job.input.empty()) validate_packing(packing, job.input);
   const std::size_t start = packing.size();
 
@@ -67,14 +66,14 @@ int run_tune(const TuneJob& job) {
   if (!job.svg.empty()) write_packing_svg(job.svg, packing);
   std::printf("tune: %zu -> %zu disks (target %zu%s), eta = %.4f, rho = %.4f, phase %s, %.3f s%s%s\n",
               start, res.count, res.target, res.reached ? ", reached" : ", NOT reached",
-              area_fraction(res.count, job.radius, box.area()),
-              relative_radius(res.count, job.radius, box.area()), to_string(res.last_phase).c_str(),
+              area_fraction(res.count, r, box.area()),
+              relative_radius(res.count, r, box.area()), to_string(res.last_phase).c_str(),
               seconds, job.output.empty() ? "" : " -> ", job.output.c_str());
   if (!res.reached) {
     std::fprintf(stderr,
                  "disktune: the target was not reached: no phase makes progress beyond %zu disks "
                  "(eta %.4f); the closest packing was written\n",
-                 res.count, area_fraction(res.count, job.radius, box.area()));
+                 res.count, area_fraction(res.count, r, box.area()));
     return kExitNotReached;
   }
   return kExitOk;
@@ -84,12 +83,7 @@ void add_tune_command(CLI::App& app, Action& action) {
   auto args = std::make_shared<TuneArgs>();
   CLI::App* cmd = app.add_subcommand(
       "tune", "Tune a maximal packing to exactly the number of disks asked for (disk injection).");
-  cmd->add_option("--domain", args->domain, "Domain kind; only 'periodic' (a periodic box) for now")
-      ->check(CLI::IsMember({"periodic"}))
-      ->capture_default_str();
-  cmd->add_option("--width", args->width, "Width W of the periodic box")->capture_default_str();
-  cmd->add_option("--height", args->height, "Height H of the periodic box")->capture_default_str();
-  cmd->add_option("--radius,-r", args->radius, "Conflict radius r (as for 'sample')")->required();
+  add_domain_options(cmd, args->domain);
   auto* count = cmd->add_option("--target-count", args->target_count, "Exact number of disks wanted");
   auto* fraction = cmd->add_option("--target-fraction", args->target_fraction,
                                    "Area fraction eta = N pi (r/2)^2 / A wanted (MPS ~0.547, hex 0.9069)");
@@ -99,8 +93,9 @@ void add_tune_command(CLI::App& app, Action& action) {
   fraction->excludes(rho);
   cmd->add_option("--method", args->method,
                   "auto: void, then repeller, then crystal injection (switching at eta 0.75 and "
-                  "0.79, or when a phase stalls); or one of them alone")
-      ->check(CLI::IsMember({"auto", "void", "repeller", "crystal"}))
+                  "0.79, or when a phase stalls); or one of them alone; angle: repel from the "
+                  "circumcenters of obtuse Delaunay triangles")
+      ->check(CLI::IsMember({"auto", "void", "repeller", "crystal", "angle"}))
       ->capture_default_str();
   cmd->add_option("--input,-i", args->input,
                   "Start from this CSV (x,y,r; a conflict-free maximal packing) instead of a new MPS");
@@ -113,7 +108,7 @@ void add_tune_command(CLI::App& app, Action& action) {
       throw CLI::ValidationError("tune", "give one target: --target-count, --target-fraction or --target-rho");
     }
     TuneJob job;
-    job.width = args->width, job.height = args->height, job.radius = args->radius;
+    job.domain = args->domain;
     job.target = cmd->count("--target-count") ? Target::count(args->target_count)
                  : cmd->count("--target-fraction") ? Target::area_fraction(args->target_fraction)
                                                    : Target::relative_radius(args->target_rho);

@@ -84,6 +84,7 @@ std::vector<PointRecord> read_points_csv(const std::string& path) {
 Packing read_packing_csv(const std::string& path, const PeriodicBox& box, double r) {
   box.validate_radius(r);
   const std::vector<PointRecord> records = read_points_csv(path);
+  if (records.empty()) throw InvalidInput("'" + path + "' holds no disks, only a header");
   Packing packing(box.frame(), r);
   for (std::size_t k = 0; k < records.size(); ++k) {
     const PointRecord& p = records[k];

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Repeller injection (paper, 2.2): push the neighbours of p away from it, one at a
-// time, each to the corner of its own void farthest from p, until one leaves a gap.
+// Repeller injection (paper, 2.2): push the disks around a repeller point away from
+// it, one at a time, each to the corner of its own void farthest from the point,
+// until one leaves a gap, which is filled.
 #include <algorithm>
 
 #include "disktune/tuning.h"
@@ -8,13 +9,12 @@
 
 namespace disktune {
 
-std::size_t repeller_inject(Packing& packing, DiskId p, Rng& rng, std::size_t max_added) {
-  const Vec2 pc = packing.center(p);
-  const double r = packing.radius(p);
-  // Neighbours: disks overlapping p's, seen in p's frame (one image each).
+std::size_t repel_from(Packing& packing, Vec2 point, DiskId self, Rng& rng, std::size_t max_added) {
+  const double r = packing.max_radius();
+  // The disks overlapping a disk at `point`, seen in its frame (one image each).
   std::vector<Neighbor> near;
-  packing.for_each_near(pc, 2 * r, [&](const Neighbor& n) {
-    if (n.id == p || (packing.flags(n.id) & (kFixed | kFrozen))) return;
+  packing.for_each_near(point, 2 * r, [&](const Neighbor& n) {
+    if (n.id == self || (packing.flags(n.id) & (kFixed | kFrozen))) return;
     for (const Neighbor& m : near) {
       if (m.id == n.id) return;
     }
@@ -28,7 +28,7 @@ std::size_t repeller_inject(Packing& packing, DiskId p, Rng& rng, std::size_t ma
     corners_in_region(packing, q.image, r, {q.id}, corners);
     if (corners.empty()) continue;
     const auto far = std::max_element(corners.begin(), corners.end(), [&](const Corner& a, const Corner& b) {
-      return squared_distance(a.point, pc) < squared_distance(b.point, pc);
+      return squared_distance(a.point, point) < squared_distance(b.point, point);
     });
     detail::UndoLog log(packing);
     log.move(q.id, far->point);
@@ -40,7 +40,12 @@ std::size_t repeller_inject(Packing& packing, DiskId p, Rng& rng, std::size_t ma
     }
     if (added > 0) return added;
   }
-  return void_inject(packing, p, rng, max_added);
+  return 0;
+}
+
+std::size_t repeller_inject(Packing& packing, DiskId p, Rng& rng, std::size_t max_added) {
+  const std::size_t added = repel_from(packing, packing.center(p), p, rng, max_added);
+  return added > 0 ? added : void_inject(packing, p, rng, max_added);
 }
 
 }  // namespace disktune

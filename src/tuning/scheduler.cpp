@@ -12,24 +12,30 @@
 namespace disktune {
 namespace {
 
+// A per-disk operation, applied to every disk in random order in one sweep.
 using Operation = std::size_t (*)(Packing&, DiskId, Rng&, std::size_t);
+// A whole sweep at once (crystal growth, angle injection).
+using Sweep = std::size_t (*)(Packing&, Rng&, std::size_t, const std::function<void()>&);
 
-// A phase: sweeps of a per-disk operation, or (op == nullptr) one crystal growth.
 struct PhasePlan {
   Phase phase;
-  Operation op;
+  Operation op;  // one of op and sweep
+  Sweep sweep;
   double until;  // area fraction at which the automatic schedule moves on (>= 1: never)
 };
 
 std::vector<PhasePlan> plan_for(const TuneOptions& o) {
-  const PhasePlan void_phase{Phase::void_injection, &void_inject, o.void_until};
-  const PhasePlan repeller_phase{Phase::repeller_injection, &repeller_inject, o.repeller_until};
-  const PhasePlan crystal_phase{Phase::crystal_injection, nullptr, 2.0};
+  const PhasePlan void_phase{Phase::void_injection, &void_inject, nullptr, o.void_until};
+  const PhasePlan repeller_phase{Phase::repeller_injection, &repeller_inject, nullptr, o.repeller_until};
+  const PhasePlan crystal_phase{Phase::crystal_injection, nullptr, &crystal_inject, 2.0};
+  const PhasePlan angle_phase{Phase::angle_injection, nullptr, &angle_inject, 2.0};
+  auto alone = [](PhasePlan p) { return p.until = 2.0, std::vector<PhasePlan>{p}; };
   switch (o.method) {
     case Method::automatic: return {void_phase, repeller_phase, crystal_phase};
-    case Method::void_injection: return {{void_phase.phase, void_phase.op, 2.0}};
-    case Method::repeller_injection: return {{repeller_phase.phase, repeller_phase.op, 2.0}};
-    case Method::crystal_injection: return {crystal_phase};
+    case Method::void_injection: return alone(void_phase);
+    case Method::repeller_injection: return alone(repeller_phase);
+    case Method::crystal_injection: return alone(crystal_phase);
+    case Method::angle_injection: return alone(angle_phase);
   }
   return {};
 }
@@ -53,35 +59,39 @@ TuneResult tune(Packing& packing, const PeriodicBox& box, const Target& target, 
     if (options.on_progress) options.on_progress({packing.size(), eta(), phase});
   };
 
-  for (const PhasePlan& plan : plan_for(options)) {
-    if (packing.size() >= result.target) break;
-    result.last_phase = plan.phase;
-    if (!plan.op) {
+  // One sweep of a phase: a whole-packing sweep, or its operation on every disk in
+  // random order.
+  auto run_sweep = [&](const PhasePlan& plan) {
+    if (plan.sweep) {
       std::size_t steps = 0;
-      crystal_inject(packing, rng, result.target - packing.size(), [&] {
+      plan.sweep(packing, rng, result.target - packing.size(), [&] {
         if (options.after_operation) options.after_operation(packing);
         if (++steps % 256 == 0) report(plan.phase);
       });
-      ++result.sweeps;
-      report(plan.phase);
-      continue;
+      return;
     }
-    for (int sweep = 0; sweep < options.max_sweeps_per_phase; ++sweep) {
+    std::vector<DiskId> order = packing.ids();
+    for (std::size_t i = order.size(); i > 1; --i) std::swap(order[i - 1], order[uniform_index(rng, i)]);
+    const std::size_t tick = std::max<std::size_t>(order.size() / 64, 1);
+    for (std::size_t k = 0; k < order.size() && packing.size() < result.target; ++k) {
+      if (!packing.alive(order[k])) continue;
+      plan.op(packing, order[k], rng, result.target - packing.size());
+      if (options.after_operation) options.after_operation(packing);
+      if (k % tick == 0) report(plan.phase);
+    }
+  };
+
+  for (const PhasePlan& plan : plan_for(options)) {
+    if (packing.size() >= result.target) break;
+    result.last_phase = plan.phase;
+    for (int k = 0; k < options.max_sweeps_per_phase; ++k) {
       if (packing.size() >= result.target || eta() >= plan.until) break;
       const std::size_t before = packing.size();
-      std::vector<DiskId> order = packing.ids();
-      for (std::size_t i = order.size(); i > 1; --i) std::swap(order[i - 1], order[uniform_index(rng, i)]);
-      const std::size_t tick = std::max<std::size_t>(order.size() / 64, 1);
-      for (std::size_t k = 0; k < order.size() && packing.size() < result.target; ++k) {
-        if (!packing.alive(order[k])) continue;
-        plan.op(packing, order[k], rng, result.target - packing.size());
-        if (options.after_operation) options.after_operation(packing);
-        if (k % tick == 0) report(plan.phase);
-      }
+      run_sweep(plan);
       ++result.sweeps;
       report(plan.phase);
       const double gain = static_cast<double>(packing.size() - before);
-      if (gain < options.min_gain_per_sweep * static_cast<double>(before)) break;
+      if (gain < std::max(options.min_gain_per_sweep * static_cast<double>(before), 0.5)) break;
     }
   }
   result.count = packing.size();

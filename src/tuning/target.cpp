@@ -48,6 +48,7 @@ std::string to_string(Phase phase) {
     case Phase::void_injection: return "void injection";
     case Phase::repeller_injection: return "repeller injection";
     case Phase::crystal_injection: return "crystal injection";
+    case Phase::angle_injection: return "angle injection";
   }
   return "?";
 }

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 
 #include "disktune/errors.h"
@@ -9,13 +10,45 @@
 namespace disktune {
 namespace {
 
-// True when some disk of `near` other than indices i and j covers `x`. Other images of
-// the same disks do count: they are other disks as far as covering goes.
-bool covered_by_others(const std::vector<Neighbor>& near, Vec2 x, std::size_t i, std::size_t j) {
+constexpr double kPi = 3.14159265358979323846;
+
+
+// True when the directions from a point to the centers of the circles through it all
+// lie in one open half-plane: then, to first order, the disks leave a wedge at the
+// point uncovered. Sorted angles; a gap above pi (by more than rounding) is the wedge.
+bool leaves_a_wedge(const Vec2* dirs, int n) {
+  double angle[16];
+  for (int k = 0; k < n; ++k) angle[k] = std::atan2(dirs[k].y, dirs[k].x);
+  std::sort(angle, angle + n);
+  double gap = angle[0] + 2 * kPi - angle[n - 1];
+  for (int k = 1; k < n; ++k) gap = std::max(gap, angle[k] - angle[k - 1]);
+  return gap > kPi + 1e-9;
+}
+
+// True when a corner x of the circles of `a` and `b` (centers given) is covered by the
+// other disks of `near` (indices i and j, if in `near`, are a and b themselves; other
+// images of the same disks do count). A disk that holds x strictly inside covers it.
+// Disks whose circles pass through x too (within the tolerance: the cocircular corners
+// of crystals and of disks placed at corners) cover it only together with a and b, when
+// they surround x: a corner on a third circle can still open a wedge of void.
+bool corner_covered(const std::vector<Neighbor>& near, Vec2 x, Vec2 a, Vec2 b, std::size_t i,
+                    std::size_t j) {
+  Vec2 through[16] = {a - x, b - x};
+  int n = 2;
   for (std::size_t k = 0; k < near.size(); ++k) {
-    if (k != i && k != j && is_covered(squared_distance(x, near[k].image), near[k].radius)) {
-      return true;
-    }
+    if (k == i || k == j) continue;
+    const double d2 = squared_distance(x, near[k].image);
+    if (!is_covered(d2, near[k].radius)) continue;
+    if (is_conflict(d2, near[k].radius)) return true;  // strictly inside
+    if (n < 16) through[n++] = near[k].image - x;
+  }
+  return n > 2 && !leaves_a_wedge(through, n);
+}
+
+// True when some disk of `near` (other than index i) covers the point x.
+bool covered_by_others(const std::vector<Neighbor>& near, Vec2 x, std::size_t i) {
+  for (std::size_t k = 0; k < near.size(); ++k) {
+    if (k != i && is_covered(squared_distance(x, near[k].image), near[k].radius)) return true;
   }
   return false;
 }
@@ -41,14 +74,14 @@ void corners_on_circle(const Packing& packing, DiskId p, std::vector<Corner>& ou
     const CircleIntersection x = intersect_circles(c, r, near[i].image, near[i].radius);
     met = met || x.count > 0;
     for (int k = 0; k < x.count; ++k) {
-      if (!covered_by_others(near, x.points[k], i, none)) {
+      if (!corner_covered(near, x.points[k], c, near[i].image, i, none)) {
         out.push_back({x.points[k], p, near[i].id});
       }
     }
   }
   if (!met) {
     const Vec2 probe = c + Vec2{r, 0};
-    if (!covered_by_others(near, probe, none, none)) out.push_back({probe, p, kNoDisk});
+    if (!covered_by_others(near, probe, none)) out.push_back({probe, p, kNoDisk});
   }
 }
 
@@ -74,7 +107,8 @@ void corners_in_region(const Packing& packing, Vec2 center, double R,
           intersect_circles(near[i].image, near[i].radius, near[j].image, near[j].radius);
       for (int k = 0; k < x.count; ++k) {
         const Vec2 pt = x.points[k];
-        if (squared_distance(pt, center) <= lim * lim && !covered_by_others(near, pt, i, j)) {
+        if (squared_distance(pt, center) <= lim * lim &&
+            !corner_covered(near, pt, near[i].image, near[j].image, i, j)) {
           out.push_back({pt, near[i].id, near[j].id});
         }
       }

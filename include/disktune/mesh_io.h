@@ -1,0 +1,33 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Writing a TriangleMesh: OFF, OBJ or legacy-ASCII VTK (ParaView opens it), chosen by
+// the file's extension, and an SVG picture of the mesh over its packing. Every writer
+// goes through write_file_atomically: a failure leaves no partial file.
+#pragma once
+
+#include <string>
+
+#include "disktune/mesh.h"
+#include "disktune/packing.h"
+
+namespace disktune {
+
+enum class MeshFormat { Off, Obj, Vtk };
+
+/// The format named by the extension of `path` (.off, .obj, .vtk; any letter case).
+/// Throws InvalidInput, listing the supported extensions, for any other.
+MeshFormat mesh_format_for_path(const std::string& path);
+
+/// Writes the mesh's vertices (z = 0) and triangles in the format of `path`'s
+/// extension. The VTK file also carries each vertex's disk id (point data `disk_id`),
+/// which tells the copies across the seam from the disks themselves.
+void write_mesh(const std::string& path, const TriangleMesh& mesh);
+
+struct MeshSvgStyle {
+  double pixels = 800;  ///< width of the picture in pixels
+};
+/// The packing's disks at half their radius (as write_packing_svg draws them) with the
+/// mesh's edges over them, every periodic image that reaches into the box.
+void write_mesh_svg(const std::string& path, const TriangleMesh& mesh, const Packing& packing,
+                    const MeshSvgStyle& style = {});
+
+}  // namespace disktune

@@ -1,0 +1,72 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Quality measures of a uniform-radius packing and its periodic Delaunay mesh: the
+// numbers the paper judges packings by (its Figs. 5, 7, 9). Definitions in
+// docs/quality.md.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "disktune/mesh.h"
+#include "disktune/packing.h"
+
+namespace disktune {
+
+/// Counts of values in equal bins: bin k holds [lo + k*bin_width, lo + (k+1)*bin_width).
+/// A value within 1e-9 bin widths below a bin's start counts in that bin (lattice
+/// angles come out as 59.99999999999999). Values past the last bin count in `overflow`.
+struct Histogram {
+  double lo = 0;
+  double bin_width = 1;
+  std::vector<std::size_t> counts;
+  std::size_t overflow = 0;
+};
+
+struct Statistics {
+  double min = 0, mean = 0, max = 0, stddev = 0;  // stddev of the population
+};
+
+struct QualityReport {
+  double radius = 0;               // r, the unit of the *_over_r numbers
+  double width = 0, height = 0;    // the periodic box
+  std::size_t count = 0;           // live disks
+  std::size_t triangle_count = 0;  // 2 * count on the torus
+  std::size_t edge_count = 0;      // 3 * count on the torus
+  double area_fraction = 0;        // eta = N pi (r/2)^2 / (W H)
+  double relative_radius = 0;      // rho = r / r_max
+  double min_distance_over_r = 0;  // shortest center distance (a Delaunay edge) / r
+  double max_coverage_over_r = 0;  // largest Delaunay circumradius / r
+  bool maximal = false;            // is_maximal: no uncovered void corner
+  bool conflict_free = false;      // no center pair closer than r (all pairs, exact)
+
+  struct Angles {
+    double min = 0, max = 0;               // degrees, over all triangle angles
+    double mean_abs_dev_60 = 0;            // mean |angle - 60|
+    double fraction_50_70 = 0;             // angles within [50, 70]
+    double fraction_obtuse_triangles = 0;  // triangles with an angle above 90
+    Histogram histogram;                   // 1-degree bins over [0, 180)
+  } angles;
+
+  struct Edges {
+    double min_over_r = 0, max_over_r = 0;
+    Histogram histogram;  // length / r, bins of 0.01 over [0, 3)
+  } edges;
+
+  struct LocalBeta {  // beta_i = Voronoi outradius / nearest-neighbour distance
+    double min = 0, mean = 0, max = 0;
+    Histogram histogram;  // bins of 0.01 over [0, 2)
+  } local_beta;
+
+  struct Voronoi {
+    Statistics aspect_ratio;  // outradius / inradius about the site = 2 beta_i
+    Statistics cell_area;     // the mean is W H / N: the cells tile the torus
+    double cell_area_cv = 0;  // standard deviation / mean of the cell areas
+  } voronoi;
+};
+
+/// Measures `packing`, whose disks all have radius `r`, and its periodic Delaunay mesh
+/// (from periodic_delaunay(packing)); distances are relative to r. Throws InvalidInput
+/// when the packing is empty, a radius differs from r, or the mesh is not the packing's.
+QualityReport measure_quality(const Packing& packing, const TriangleMesh& mesh, double r);
+
+}  // namespace disktune

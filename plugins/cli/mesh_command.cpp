@@ -1,0 +1,57 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// `disktune mesh`: the periodic Delaunay triangulation of a packing, as OFF, OBJ or VTK.
+#include <chrono>
+#include <cstdio>
+#include <memory>
+
+#include "commands.h"
+#include "disktune/errors.h"
+#include "disktune/io.h"
+#include "disktune/mesh.h"
+#include "disktune/mesh_io.h"
+
+namespace disktune::cli {
+namespace {
+
+struct MeshArgs {
+  std::string input;
+  DomainArgs domain;
+  std::string output;
+};
+
+int run_mesh(const MeshArgs& args) {
+  mesh_format_for_path(args.output);  // a bad extension fails before any work
+  check_output_folder(args.output);
+  const PeriodicBox box(args.domain.width, args.domain.height);
+  const Packing packing = read_packing_csv(args.input, box, args.domain.radius);
+  const auto t0 = std::chrono::steady_clock::now();
+  const TriangleMesh mesh = periodic_delaunay(packing);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  write_mesh(args.output, mesh);
+  std::printf(
+      "mesh: %zu disks, %zu triangles, %zu vertices (%zu copies across the seam), "
+      "%.3f s -> %s\n",
+      mesh.disk_count, mesh.triangles.size(), mesh.vertices.size(),
+      mesh.vertices.size() - mesh.disk_count, seconds, args.output.c_str());
+  return kExitOk;
+}
+
+}  // namespace
+
+void add_mesh_command(CLI::App& app, Action& action) {
+  auto args = std::make_shared<MeshArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "mesh",
+      "Write the periodic Delaunay triangulation of a packing (CSV x,y,r) as OFF, OBJ or VTK. "
+      "Each torus triangle appears once, laid out with its centroid in the box; vertices past "
+      "the first N are periodic copies of disks, across the seam.");
+  cmd->add_option("points", args->input, "CSV file of the packing (header x,y,r)")->required();
+  add_domain_options(cmd, args->domain);
+  cmd->add_option("--output,-o", args->output,
+                  "Mesh file to write: .off, .obj or .vtk (legacy ASCII, opens in ParaView)")
+      ->required();
+  cmd->callback([args, &action] { action = [args] { return run_mesh(*args); }; });
+}
+
+}  // namespace disktune::cli

@@ -1,0 +1,212 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "disktune/quality.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "disktune/density.h"
+#include "disktune/errors.h"
+#include "disktune/tolerance.h"
+#include "disktune/voids.h"
+
+namespace disktune {
+namespace {
+
+constexpr double kRadToDeg = 57.295779513082320876798;
+// Angles this close to a threshold (degrees) count as on it: a square lattice's right
+// angles are not obtuse, an angle of 70 - 1e-14 is within [50, 70].
+constexpr double kAngleTolDeg = 1e-9;
+constexpr double kBinSnap = 1e-9;
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+Histogram make_histogram(double lo, double bin_width, std::size_t bins) {
+  Histogram h;
+  h.lo = lo;
+  h.bin_width = bin_width;
+  h.counts.assign(bins, 0);
+  return h;
+}
+
+void add(Histogram& h, double v) {
+  const double k = std::floor((v - h.lo) / h.bin_width + kBinSnap);
+  if (k >= static_cast<double>(h.counts.size())) {
+    ++h.overflow;
+  } else {
+    ++h.counts[static_cast<std::size_t>(std::max(k, 0.0))];
+  }
+}
+
+double cross(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
+
+/// The angle at corner a of triangle (a, b, c), in degrees; atan2 stays accurate for
+/// angles near 0 and 180, where acos of a rounded cosine does not.
+double angle_at(Vec2 a, Vec2 b, Vec2 c) {
+  const Vec2 u = b - a, v = c - a;
+  return std::atan2(std::abs(cross(u, v)), dot(u, v)) * kRadToDeg;
+}
+
+/// The circumcenter of (a, b, c) relative to a.
+Vec2 circumcenter_from(Vec2 a, Vec2 b, Vec2 c) {
+  const Vec2 u = b - a, v = c - a;
+  const double d = 2 * cross(u, v);
+  const double u2 = squared_norm(u), v2 = squared_norm(v);
+  return {(v.y * u2 - u.y * v2) / d, (u.x * v2 - v.x * u2) / d};
+}
+
+Statistics statistics(const std::vector<double>& values) {
+  Statistics s;
+  if (values.empty()) return s;
+  s.min = *std::min_element(values.begin(), values.end());
+  s.max = *std::max_element(values.begin(), values.end());
+  double sum = 0;
+  for (double v : values) sum += v;
+  s.mean = sum / static_cast<double>(values.size());
+  double var = 0;
+  for (double v : values) var += (v - s.mean) * (v - s.mean);
+  s.stddev = std::sqrt(var / static_cast<double>(values.size()));
+  return s;
+}
+
+void check_mesh_of(const Packing& packing, const TriangleMesh& mesh) {
+  if (packing.empty()) throw InvalidInput("cannot measure an empty packing: it has no disks");
+  bool ok = mesh.disk_count == packing.size() && mesh.vertex_disk.size() == mesh.vertices.size() &&
+            mesh.vertex_offset.size() == mesh.vertices.size();
+  for (std::size_t v = 0; ok && v < mesh.vertex_disk.size(); ++v)
+    ok = packing.alive(mesh.vertex_disk[v]);
+  for (std::size_t t = 0; ok && t < mesh.triangles.size(); ++t) {
+    for (std::uint32_t v : mesh.triangles[t]) ok = ok && v < mesh.vertices.size();
+  }
+  if (!ok) {
+    throw InvalidInput(
+        "measure_quality: the mesh is not the packing's (build it with "
+        "periodic_delaunay from the same packing)");
+  }
+}
+
+void check_uniform_radius(const Packing& packing, double r) {
+  for (const DiskId id : packing.ids()) {
+    if (std::abs(packing.radius(id) - r) > kRelTol * r) {
+      std::ostringstream msg;
+      msg << "measure_quality: disk " << id << " has radius " << packing.radius(id)
+          << ", not r = " << r << "; the report is for packings of one radius";
+      throw InvalidInput(msg.str());
+    }
+  }
+}
+
+/// No two centers closer than r: every pair within r, through the packing's grid.
+bool is_conflict_free(const Packing& packing, double r) {
+  for (const DiskId id : packing.ids()) {
+    if (packing.any_near(packing.center(id), r,
+                         [&](const Neighbor& n) { return n.id != id && is_conflict(n.d2, r); })) {
+      return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+QualityReport measure_quality(const Packing& packing, const TriangleMesh& mesh, double r) {
+  check_mesh_of(packing, mesh);
+  check_uniform_radius(packing, r);
+  QualityReport q;
+  q.radius = r;
+  q.width = packing.frame().extent.x;
+  q.height = packing.frame().extent.y;
+  q.count = packing.size();
+  q.triangle_count = mesh.triangles.size();
+  q.area_fraction = area_fraction(q.count, r, q.width * q.height);
+  q.relative_radius = relative_radius(q.count, r, q.width * q.height);
+
+  // Exact checks through the packing itself, apart from the mesh.
+  q.maximal = is_maximal(packing);
+  q.conflict_free = is_conflict_free(packing, r);
+
+  // Per disk: Voronoi outradius (largest circumradius around it), nearest-neighbour
+  // distance (shortest incident edge) and cell area.
+  const std::size_t ids = packing.id_bound();
+  std::vector<double> outradius(ids, 0), nearest(ids, kInf), cell_area(ids, 0);
+
+  auto& A = q.angles;
+  A.histogram = make_histogram(0, 1, 180);
+  A.min = kInf;
+  A.max = 0;
+  std::size_t in_50_70 = 0, obtuse = 0;
+  double abs_dev_sum = 0, max_circumradius = 0;
+  for (const auto& t : mesh.triangles) {
+    const Vec2 p[3] = {mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]};
+    double largest = 0;
+    for (int k = 0; k < 3; ++k) {
+      const double deg = angle_at(p[k], p[(k + 1) % 3], p[(k + 2) % 3]);
+      add(A.histogram, deg);
+      A.min = std::min(A.min, deg);
+      A.max = std::max(A.max, deg);
+      largest = std::max(largest, deg);
+      abs_dev_sum += std::abs(deg - 60);
+      if (deg >= 50 - kAngleTolDeg && deg <= 70 + kAngleTolDeg) ++in_50_70;
+    }
+    if (largest > 90 + kAngleTolDeg) ++obtuse;
+
+    // The circumcenter is the Voronoi vertex the three cells share; it is at the
+    // circumradius from each corner. Each corner's share of the triangle is its
+    // quadrilateral (corner, edge midpoint, circumcenter, edge midpoint), signed, so
+    // the shares add up to the Voronoi cell even when the circumcenter lies outside.
+    const Vec2 o = p[0] + circumcenter_from(p[0], p[1], p[2]);
+    const double rho = distance(o, p[0]);
+    max_circumradius = std::max(max_circumradius, rho);
+    for (int k = 0; k < 3; ++k) {
+      const DiskId d = mesh.vertex_disk[t[k]];
+      outradius[d] = std::max(outradius[d], rho);
+      const Vec2 a = p[k], next = (a + p[(k + 1) % 3]) * 0.5, prev = (a + p[(k + 2) % 3]) * 0.5;
+      cell_area[d] += 0.5 * (cross(next - a, o - a) + cross(o - a, prev - a));
+    }
+  }
+  const double angle_count = 3.0 * static_cast<double>(mesh.triangles.size());
+  A.mean_abs_dev_60 = abs_dev_sum / angle_count;
+  A.fraction_50_70 = static_cast<double>(in_50_70) / angle_count;
+  A.fraction_obtuse_triangles =
+      static_cast<double>(obtuse) / static_cast<double>(mesh.triangles.size());
+  q.max_coverage_over_r = max_circumradius / r;
+
+  auto& E = q.edges;
+  E.histogram = make_histogram(0, 0.01, 300);
+  E.min_over_r = kInf;
+  E.max_over_r = 0;
+  const auto edges = unique_edges(mesh);
+  q.edge_count = edges.size();
+  for (const auto& e : edges) {
+    const double len = distance(mesh.vertices[e[0]], mesh.vertices[e[1]]);
+    E.min_over_r = std::min(E.min_over_r, len / r);
+    E.max_over_r = std::max(E.max_over_r, len / r);
+    add(E.histogram, len / r);
+    for (const std::uint32_t v : e) {
+      nearest[mesh.vertex_disk[v]] = std::min(nearest[mesh.vertex_disk[v]], len);
+    }
+  }
+  // The nearest other center of any disk is a Delaunay neighbour.
+  q.min_distance_over_r = E.min_over_r;
+
+  auto& B = q.local_beta;
+  B.histogram = make_histogram(0, 0.01, 200);
+  std::vector<double> betas, aspects, areas;
+  for (const DiskId id : packing.ids()) {
+    const double beta = outradius[id] / nearest[id];
+    betas.push_back(beta);
+    aspects.push_back(2 * beta);  // the cell's inradius about its site is nearest / 2
+    areas.push_back(cell_area[id]);
+    add(B.histogram, beta);
+  }
+  const Statistics beta_stats = statistics(betas);
+  B.min = beta_stats.min;
+  B.mean = beta_stats.mean;
+  B.max = beta_stats.max;
+  q.voronoi.aspect_ratio = statistics(aspects);
+  q.voronoi.cell_area = statistics(areas);
+  q.voronoi.cell_area_cv = q.voronoi.cell_area.stddev / q.voronoi.cell_area.mean;
+  return q;
+}
+
+}  // namespace disktune

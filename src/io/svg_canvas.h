@@ -1,0 +1,61 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// What every SVG picture of a packing's frame shares (internal): the page, the map from
+// domain to pixels (y up in the domain, down in SVG), the clip to the frame, and the
+// periodic images of a shape that reach into it.
+#pragma once
+
+#include <cstdio>
+#include <ostream>
+
+#include "disktune/frame.h"
+
+namespace disktune::detail {
+
+class SvgCanvas {
+ public:
+  SvgCanvas(const Frame& frame, double pixels)
+      : f_(frame), scale_(pixels / frame.extent.x), w_(pixels), h_(frame.extent.y * scale_) {}
+
+  double scale() const { return scale_; }
+  Vec2 px(Vec2 p) const { return {(p.x - f_.origin.x) * scale_, h_ - (p.y - f_.origin.y) * scale_}; }
+
+  /// The page, a white frame, and a group clipped to it; close with end().
+  void begin(std::ostream& out) const {
+    char buf[200];
+    std::snprintf(buf, sizeof buf,
+                  "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\" "
+                  "viewBox=\"0 0 %.3f %.3f\">\n<clipPath id=\"frame\"><rect width=\"%.3f\" "
+                  "height=\"%.3f\"/></clipPath>\n",
+                  w_, h_, w_, h_, w_, h_);
+    out << buf;
+    std::snprintf(buf, sizeof buf,
+                  "<rect width=\"%.3f\" height=\"%.3f\" fill=\"white\" stroke=\"black\"/>\n"
+                  "<g clip-path=\"url(#frame)\">\n",
+                  w_, h_);
+    out << buf;
+  }
+  void end(std::ostream& out) const { out << "</g>\n</svg>\n"; }
+
+  /// Calls draw(shift) for each periodic image of the box [lo, hi] that meets the frame
+  /// (the shape itself only, for a frame that is not periodic).
+  template <class Draw>
+  void for_each_image(Vec2 lo, Vec2 hi, Draw&& draw) const {
+    const int span = f_.periodic ? 1 : 0;
+    for (int wy = -span; wy <= span; ++wy) {
+      for (int wx = -span; wx <= span; ++wx) {
+        const Vec2 s{wx * f_.extent.x, wy * f_.extent.y};
+        if (hi.x + s.x < f_.origin.x || lo.x + s.x > f_.origin.x + f_.extent.x ||
+            hi.y + s.y < f_.origin.y || lo.y + s.y > f_.origin.y + f_.extent.y) {
+          continue;
+        }
+        draw(s);
+      }
+    }
+  }
+
+ private:
+  Frame f_;
+  double scale_, w_, h_;
+};
+
+}  // namespace disktune::detail

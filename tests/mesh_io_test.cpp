@@ -1,0 +1,138 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Mesh files: OFF, OBJ and legacy VTK read back to the same numbers; unknown
+// extensions are refused before anything is written; the SVG picture.
+#include "disktune/mesh_io.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "disktune/errors.h"
+#include "lattices.h"
+
+namespace disktune {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct TempDir {
+  fs::path path =
+      fs::temp_directory_path() /
+      ("disktune_mesh_io_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
+       "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+  TempDir() { fs::create_directories(path); }
+  ~TempDir() { fs::remove_all(path); }
+  std::string file(const std::string& name) const { return (path / name).string(); }
+};
+
+TriangleMesh small_mesh() {
+  // A shifted hex lattice: copies across the seam, coordinates with many digits.
+  const Packing base = test::hex_lattice(6, 4, 0.3, 0.3);
+  Packing p(base.frame(), 0.3);
+  for (DiskId id : base.ids()) p.insert(base.center(id) + Vec2{0.0123456789, 0.1}, 0.3);
+  return periodic_delaunay(p);
+}
+
+TEST(MeshIo, OffReadsBackEveryNumber) {
+  TempDir dir;
+  const TriangleMesh m = small_mesh();
+  write_mesh(dir.file("m.off"), m);
+  std::ifstream in(dir.file("m.off"));
+  std::string magic;
+  std::size_t nv, nf, ne;
+  in >> magic >> nv >> nf >> ne;
+  EXPECT_EQ(magic, "OFF");
+  ASSERT_EQ(nv, m.vertices.size());
+  ASSERT_EQ(nf, m.triangles.size());
+  for (const Vec2 p : m.vertices) {
+    double x, y, z;
+    in >> x >> y >> z;
+    EXPECT_EQ(x, p.x);
+    EXPECT_EQ(y, p.y);
+    EXPECT_EQ(z, 0);
+  }
+  for (const auto& t : m.triangles) {
+    std::uint32_t k, a, b, c;
+    in >> k >> a >> b >> c;
+    EXPECT_EQ(k, 3u);
+    EXPECT_EQ((std::array<std::uint32_t, 3>{a, b, c}), t);
+  }
+}
+
+TEST(MeshIo, ObjCountsVerticesFromOne) {
+  TempDir dir;
+  const TriangleMesh m = small_mesh();
+  write_mesh(dir.file("m.OBJ"), m);  // the extension in any case
+  std::ifstream in(dir.file("m.OBJ"));
+  std::string line;
+  std::size_t v = 0, f = 0;
+  while (std::getline(in, line)) {
+    std::istringstream s(line);
+    std::string tag;
+    s >> tag;
+    if (tag == "v") {
+      double x, y;
+      s >> x >> y;
+      EXPECT_EQ(Vec2(x, y), m.vertices[v]);
+      ++v;
+    } else if (tag == "f") {
+      std::uint32_t a, b, c;
+      s >> a >> b >> c;
+      EXPECT_EQ((std::array<std::uint32_t, 3>{a - 1, b - 1, c - 1}), m.triangles[f]);
+      ++f;
+    }
+  }
+  EXPECT_EQ(v, m.vertices.size());
+  EXPECT_EQ(f, m.triangles.size());
+}
+
+TEST(MeshIo, VtkHasPointsPolygonsAndDiskIds) {
+  TempDir dir;
+  const TriangleMesh m = small_mesh();
+  write_mesh(dir.file("m.vtk"), m);
+  std::ifstream in(dir.file("m.vtk"));
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string s = text.str();
+  EXPECT_EQ(s.rfind("# vtk DataFile Version 3.0\n", 0), 0u);
+  EXPECT_NE(s.find("\nASCII\nDATASET POLYDATA\n"), std::string::npos);
+  EXPECT_NE(s.find("POINTS " + std::to_string(m.vertices.size()) + " double\n"), std::string::npos);
+  EXPECT_NE(s.find("POLYGONS " + std::to_string(m.triangles.size()) + " " +
+                   std::to_string(4 * m.triangles.size()) + "\n"),
+            std::string::npos);
+  EXPECT_NE(s.find("POINT_DATA " + std::to_string(m.vertices.size()) +
+                   "\nSCALARS disk_id unsigned_int 1\nLOOKUP_TABLE default\n"),
+            std::string::npos);
+}
+
+TEST(MeshIo, UnknownExtensionIsRefusedAndWritesNothing) {
+  TempDir dir;
+  const TriangleMesh m = small_mesh();
+  for (const char* name : {"m.ply", "m", "m.off.txt"}) {
+    try {
+      write_mesh(dir.file(name), m);
+      ADD_FAILURE() << name << " was accepted";
+    } catch (const InvalidInput& e) {
+      EXPECT_NE(std::string(e.what()).find(".off, .obj, .vtk"), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_TRUE(fs::is_empty(dir.path));
+}
+
+TEST(MeshIo, SvgDrawsDisksAndEdges) {
+  TempDir dir;
+  const Packing p = test::hex_lattice(6, 4, 0.3, 0.3);
+  write_mesh_svg(dir.file("m.svg"), periodic_delaunay(p), p);
+  std::ifstream in(dir.file("m.svg"));
+  std::stringstream text;
+  text << in.rdbuf();
+  EXPECT_NE(text.str().find("<svg"), std::string::npos);
+  EXPECT_NE(text.str().find("<circle"), std::string::npos);
+  EXPECT_NE(text.str().find("<path fill=\"none\""), std::string::npos);
+  EXPECT_EQ(text.str().substr(text.str().size() - 7), "</svg>\n");
+}
+
+}  // namespace
+}  // namespace disktune
