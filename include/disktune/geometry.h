@@ -28,6 +28,17 @@ inline double norm(Vec2 a) { return std::sqrt(dot(a, a)); }
 inline double squared_distance(Vec2 a, Vec2 b) { return squared_norm(a - b); }
 inline double distance(Vec2 a, Vec2 b) { return norm(a - b); }
 inline Vec2 perp(Vec2 a) { return {-a.y, a.x}; }
+/// z-component of the cross product: twice the signed area of the triangle (0, a, b).
+inline double cross(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
+
+/// The circumcenter of triangle abc (not degenerate), computed relative to a for
+/// accuracy: a Voronoi vertex of the Delaunay triangulation.
+inline Vec2 circumcenter(Vec2 a, Vec2 b, Vec2 c) {
+  const Vec2 u = b - a, v = c - a;
+  const double d = 2 * cross(u, v);
+  const double u2 = squared_norm(u), v2 = squared_norm(v);
+  return a + Vec2{(v.y * u2 - u.y * v2) / d, (u.x * v2 - v.x * u2) / d};
+}
 
 /// Intersection points of two circles. `count` is 0 (disjoint, nested or concentric),
 /// 1 (tangent, also when rounding makes near-tangent circles miss by a hair) or 2.

@@ -38,21 +38,11 @@ void add(Histogram& h, double v) {
   }
 }
 
-double cross(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
-
 /// The angle at corner a of triangle (a, b, c), in degrees; atan2 stays accurate for
 /// angles near 0 and 180, where acos of a rounded cosine does not.
 double angle_at(Vec2 a, Vec2 b, Vec2 c) {
   const Vec2 u = b - a, v = c - a;
   return std::atan2(std::abs(cross(u, v)), dot(u, v)) * kRadToDeg;
-}
-
-/// The circumcenter of (a, b, c) relative to a.
-Vec2 circumcenter_from(Vec2 a, Vec2 b, Vec2 c) {
-  const Vec2 u = b - a, v = c - a;
-  const double d = 2 * cross(u, v);
-  const double u2 = squared_norm(u), v2 = squared_norm(v);
-  return {(v.y * u2 - u.y * v2) / d, (u.x * v2 - v.x * u2) / d};
 }
 
 Statistics statistics(const std::vector<double>& values) {
@@ -154,7 +144,7 @@ QualityReport measure_quality(const Packing& packing, const TriangleMesh& mesh, 
     // circumradius from each corner. Each corner's share of the triangle is its
     // quadrilateral (corner, edge midpoint, circumcenter, edge midpoint), signed, so
     // the shares add up to the Voronoi cell even when the circumcenter lies outside.
-    const Vec2 o = p[0] + circumcenter_from(p[0], p[1], p[2]);
+    const Vec2 o = circumcenter(p[0], p[1], p[2]);
     const double rho = distance(o, p[0]);
     max_circumradius = std::max(max_circumradius, rho);
     for (int k = 0; k < 3; ++k) {

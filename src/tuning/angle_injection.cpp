@@ -10,14 +10,6 @@
 namespace disktune {
 namespace {
 
-// Circumcenter of triangle abc (non-degenerate).
-Vec2 circumcenter(Vec2 a, Vec2 b, Vec2 c) {
-  const Vec2 ab = b - a, ac = c - a;
-  const double d = 2 * (ab.x * ac.y - ab.y * ac.x);
-  const double ab2 = squared_norm(ab), ac2 = squared_norm(ac);
-  return a + Vec2{(ac.y * ab2 - ab.y * ac2) / d, (ab.x * ac2 - ac.x * ab2) / d};
-}
-
 // True when the triangle has an angle above 90 degrees.
 bool obtuse(Vec2 a, Vec2 b, Vec2 c) {
   return dot(b - a, c - a) < 0 || dot(a - b, c - b) < 0 || dot(a - c, b - c) < 0;
