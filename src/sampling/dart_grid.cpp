@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "../voids/corner_cover.h"
 #include "disktune/spatial_grid.h"  // detail::floor_div
 
 namespace disktune::detail {
@@ -179,11 +180,16 @@ int DartGrid::uncovered_vertices(Vec2 lo, Vec2 hi, const Vec2* disks, int n,
         if (y >= lo.y && y <= hi.y) consider({x, y}, i, -1);
       }
     }
-    // Where circle i meets circle j inside the cell.
+    // Where circle i meets circle j inside the cell (a corner on further circles is
+    // judged as the void corner search does: covered if they surround it).
     for (int j = i + 1; j < n; ++j) {
       const CircleIntersection x = intersect_circles(p, r_, disks[j], r_);
       for (int k = 0; k < x.count; ++k) {
-        if (inside(x.points[k])) consider(x.points[k], i, j);
+        if (!inside(x.points[k]) || count == 64) continue;
+        CornerCover cover(x.points[k], p, disks[j]);
+        bool covered = false;
+        for (int m = 0; m < n && !covered; ++m) covered = m != i && m != j && cover.add(disks[m], r_);
+        if (!covered && !cover.covered()) out[count++] = x.points[k];
       }
     }
   }

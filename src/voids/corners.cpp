@@ -5,44 +5,22 @@
 
 #include "disktune/errors.h"
 
+#include "corner_cover.h"
 #include "disktune/voids.h"
 
 namespace disktune {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
-
-// True when the directions from a point to the centers of the circles through it all
-// lie in one open half-plane: then, to first order, the disks leave a wedge at the
-// point uncovered. Sorted angles; a gap above pi (by more than rounding) is the wedge.
-bool leaves_a_wedge(const Vec2* dirs, int n) {
-  double angle[16];
-  for (int k = 0; k < n; ++k) angle[k] = std::atan2(dirs[k].y, dirs[k].x);
-  std::sort(angle, angle + n);
-  double gap = angle[0] + 2 * kPi - angle[n - 1];
-  for (int k = 1; k < n; ++k) gap = std::max(gap, angle[k] - angle[k - 1]);
-  return gap > kPi + 1e-9;
-}
-
-// True when a corner x of the circles of `a` and `b` (centers given) is covered by the
-// other disks of `near` (indices i and j, if in `near`, are a and b themselves; other
-// images of the same disks do count). A disk that holds x strictly inside covers it.
-// Disks whose circles pass through x too (within the tolerance: the cocircular corners
-// of crystals and of disks placed at corners) cover it only together with a and b, when
-// they surround x: a corner on a third circle can still open a wedge of void.
+// True when the corner x of the circles of a and b (indices i and j in `near`, if there)
+// is covered by the other disks of `near`; other images of a and b do count.
 bool corner_covered(const std::vector<Neighbor>& near, Vec2 x, Vec2 a, Vec2 b, std::size_t i,
                     std::size_t j) {
-  Vec2 through[16] = {a - x, b - x};
-  int n = 2;
+  detail::CornerCover cover(x, a, b);
   for (std::size_t k = 0; k < near.size(); ++k) {
-    if (k == i || k == j) continue;
-    const double d2 = squared_distance(x, near[k].image);
-    if (!is_covered(d2, near[k].radius)) continue;
-    if (is_conflict(d2, near[k].radius)) return true;  // strictly inside
-    if (n < 16) through[n++] = near[k].image - x;
+    if (k != i && k != j && cover.add(near[k].image, near[k].radius)) return true;
   }
-  return n > 2 && !leaves_a_wedge(through, n);
+  return cover.covered();
 }
 
 // True when some disk of `near` (other than index i) covers the point x.
