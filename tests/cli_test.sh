@@ -70,7 +70,10 @@ expect tune-not-reached 4 "NOT reached" -- "$bin" tune --radius 0.03 --target-fr
 expect tune-two-targets 2 "excludes" -- "$bin" tune --radius 0.03 --target-count 900 --target-rho 0.9
 expect tune-no-target 2 "give one target" -- "$bin" tune --radius 0.03
 expect tune-too-dense 2 "densest packing" -- "$bin" tune --radius 0.03 --target-count 5000
-expect tune-below 2 "ejection" -- "$bin" tune --radius 0.03 --target-count 10
+expect tune-eject 0 "-> [0-9]+ disks .*reached.*eta = 0\.40[0-9]*, " -- "$bin" tune --radius 0.03 --target-fraction 0.40
+expect tune-sift 0 "reached" -- "$bin" tune --radius 0.03 --target-fraction 0.50 --method sift
+expect tune-eject-wrong-method 2 "use an ejection method" -- "$bin" tune --radius 0.03 --target-fraction 0.40 --method void
+expect tune-eject-too-far 4 "NOT reached" -- "$bin" tune --radius 0.03 --target-fraction 0.30 --method attractor
 expect tune-bad-method 2 "method" -- "$bin" tune --radius 0.03 --target-count 900 --method fancy
 expect tune-angle 0 "reached" -- "$bin" tune --radius 0.03 --target-fraction 0.7 --method angle
 expect tune-wrong-radius 2 "m.csv:2: radius 0.03 differs" -- "$bin" tune --radius 0.02 --input m.csv --target-count 2000

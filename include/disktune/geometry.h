@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <vector>
 
 namespace disktune {
 
@@ -39,6 +40,17 @@ inline Vec2 circumcenter(Vec2 a, Vec2 b, Vec2 c) {
   const double u2 = squared_norm(u), v2 = squared_norm(v);
   return a + Vec2{(v.y * u2 - u.y * v2) / d, (u.x * v2 - v.x * u2) / d};
 }
+
+/// A circle, or a disk, by its center and radius.
+struct Circle {
+  Vec2 center;
+  double radius;
+};
+
+/// The smallest circle enclosing the points (Welzl's algorithm, iterative form; the
+/// points are taken in the given order, so shuffle them for the expected linear time).
+/// Empty input gives radius -1.
+Circle min_enclosing_circle(const std::vector<Vec2>& points);
 
 /// Intersection points of two circles. `count` is 0 (disjoint, nested or concentric),
 /// 1 (tangent, also when rounding makes near-tangent circles miss by a hair) or 2.

@@ -32,14 +32,32 @@ struct Target {
 std::size_t target_count(const Target& target, double r, double area);
 
 /// The operations, and the phases of the scheduler that run them.
-enum class Phase { none, void_injection, repeller_injection, crystal_injection, angle_injection };
+enum class Phase {
+  none,
+  void_injection,
+  repeller_injection,
+  crystal_injection,
+  angle_injection,
+  sift_ejection,
+  attractor_ejection
+};
 std::string to_string(Phase phase);
 
 /// How `tune` picks operations: `automatic` runs the phases in the paper's order,
 /// switching at the area-fraction thresholds or when a phase stops making progress;
 /// the others run one phase alone (angle injection is not part of the automatic
 /// schedule: the paper offers it as an alternative that targets obtuse triangles).
-enum class Method { automatic, void_injection, repeller_injection, crystal_injection, angle_injection };
+/// Targets below the current count run ejection: automatic is sifting, then attractor
+/// ejection.
+enum class Method {
+  automatic,
+  void_injection,
+  repeller_injection,
+  crystal_injection,
+  angle_injection,
+  sift_ejection,
+  attractor_ejection
+};
 
 struct Progress {
   std::size_t count;
@@ -106,6 +124,17 @@ std::size_t repel_from(Packing& packing, Vec2 point, DiskId self, Rng& rng, std:
 /// that changed the packing. Returns the number of disks added.
 std::size_t crystal_inject(Packing& packing, Rng& rng, std::size_t max_added,
                            const std::function<void()>& after_step = {});
+
+/// Sifted-disks ejection (section 3): p and one overlapping neighbour are replaced by a
+/// single disk that covers what they covered (random where there is a choice). Returns
+/// the number of disks removed: 1, or 0 when no neighbour allows it.
+std::size_t sift_eject(Packing& packing, DiskId p, Rng& rng, std::size_t max_removed);
+
+/// Attractor ejection (3.1): each neighbour of p moves toward p as far as it can while
+/// covering its own void and staying out of other disks; then p is removed if its void
+/// is covered, else moved to the center of the smallest circle around its void's
+/// corners, else everything goes back. Returns the number of disks removed (0 or 1).
+std::size_t attractor_eject(Packing& packing, DiskId p, Rng& rng, std::size_t max_removed);
 
 /// Injection for angles (2.4), one sweep: the circumcenter of every obtuse triangle of
 /// the periodic Delaunay triangulation, in random order, is used as a repeller point

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // `disktune tune`: from an MPS (made here, or read with --input) to exactly the
-// number of disks asked for, by disk injection.
+// number of disks asked for, by disk injection or ejection.
 #include <chrono>
 #include <cstdio>
 #include <memory>
@@ -31,6 +31,8 @@ Method method_named(const std::string& name) {
   if (name == "repeller") return Method::repeller_injection;
   if (name == "crystal") return Method::crystal_injection;
   if (name == "angle") return Method::angle_injection;
+  if (name == "sift") return Method::sift_ejection;
+  if (name == "attractor") return Method::attractor_ejection;
   return Method::automatic;
 }
 
@@ -82,7 +84,9 @@ int run_tune(const TuneJob& job) {
 void add_tune_command(CLI::App& app, Action& action) {
   auto args = std::make_shared<TuneArgs>();
   CLI::App* cmd = app.add_subcommand(
-      "tune", "Tune a maximal packing to exactly the number of disks asked for (disk injection).");
+      "tune",
+      "Tune a maximal packing to exactly the number of disks asked for: disk injection to go "
+      "denser, disk ejection to go sparser.");
   add_domain_options(cmd, args->domain);
   auto* count = cmd->add_option("--target-count", args->target_count, "Exact number of disks wanted");
   auto* fraction = cmd->add_option("--target-fraction", args->target_fraction,
@@ -92,10 +96,11 @@ void add_tune_command(CLI::App& app, Action& action) {
   count->excludes(fraction)->excludes(rho);
   fraction->excludes(rho);
   cmd->add_option("--method", args->method,
-                  "auto: void, then repeller, then crystal injection (switching at eta 0.75 and "
-                  "0.79, or when a phase stalls); or one of them alone; angle: repel from the "
-                  "circumcenters of obtuse Delaunay triangles")
-      ->check(CLI::IsMember({"auto", "void", "repeller", "crystal", "angle"}))
+                  "auto: denser by void, then repeller, then crystal injection (switching at eta "
+                  "0.75 and 0.79, or when a phase stalls), sparser by sifting, then attractor "
+                  "ejection; or one phase alone: void, repeller, crystal, angle (repel from the "
+                  "circumcenters of obtuse Delaunay triangles), sift, attractor")
+      ->check(CLI::IsMember({"auto", "void", "repeller", "crystal", "angle", "sift", "attractor"}))
       ->capture_default_str();
   cmd->add_option("--input,-i", args->input,
                   "Start from this CSV (x,y,r; a conflict-free maximal packing) instead of a new MPS");

@@ -3,6 +3,7 @@
 // random order, moving to the next phase at the area-fraction thresholds or when a
 // sweep stops paying, and stopping the moment the count is the target.
 #include <chrono>
+#include <cmath>
 #include <vector>
 
 #include "disktune/density.h"
@@ -24,18 +25,33 @@ struct PhasePlan {
   double until;  // area fraction at which the automatic schedule moves on (>= 1: never)
 };
 
-std::vector<PhasePlan> plan_for(const TuneOptions& o) {
+// The phases for a method, in order. Injection phases move on at their area fraction
+// (automatic schedule) or when they stall; ejection phases when they stall.
+std::vector<PhasePlan> plan_for(const TuneOptions& o, bool eject) {
   const PhasePlan void_phase{Phase::void_injection, &void_inject, nullptr, o.void_until};
   const PhasePlan repeller_phase{Phase::repeller_injection, &repeller_inject, nullptr, o.repeller_until};
   const PhasePlan crystal_phase{Phase::crystal_injection, nullptr, &crystal_inject, 2.0};
   const PhasePlan angle_phase{Phase::angle_injection, nullptr, &angle_inject, 2.0};
+  const PhasePlan sift_phase{Phase::sift_ejection, &sift_eject, nullptr, 2.0};
+  const PhasePlan attractor_phase{Phase::attractor_ejection, &attractor_eject, nullptr, 2.0};
   auto alone = [](PhasePlan p) { return p.until = 2.0, std::vector<PhasePlan>{p}; };
+  const bool ejects = o.method == Method::sift_ejection || o.method == Method::attractor_ejection;
+  if (o.method != Method::automatic && ejects != eject) {
+    throw InvalidInput(eject ? "tune: the target is below the current count, but the method adds "
+                               "disks; use an ejection method (or automatic)"
+                             : "tune: the target is above the current count, but the method removes "
+                               "disks; use an injection method (or automatic)");
+  }
   switch (o.method) {
-    case Method::automatic: return {void_phase, repeller_phase, crystal_phase};
+    case Method::automatic:
+      if (eject) return {sift_phase, attractor_phase};
+      return {void_phase, repeller_phase, crystal_phase};
     case Method::void_injection: return alone(void_phase);
     case Method::repeller_injection: return alone(repeller_phase);
     case Method::crystal_injection: return alone(crystal_phase);
     case Method::angle_injection: return alone(angle_phase);
+    case Method::sift_ejection: return alone(sift_phase);
+    case Method::attractor_ejection: return alone(attractor_phase);
   }
   return {};
 }
@@ -49,11 +65,11 @@ TuneResult tune(Packing& packing, const PeriodicBox& box, const Target& target, 
   const double r = packing.max_radius();
   TuneResult result;
   result.target = target_count(target, r, box.area());
-  if (result.target < packing.size()) {
-    throw InvalidInput("tune: the target (" + std::to_string(result.target) +
-                       " disks) is below the current count (" + std::to_string(packing.size()) +
-                       "): that needs disk ejection, which is not implemented yet");
-  }
+  const bool eject = result.target < packing.size();
+  // Disks still to add or remove: what each operation may change at most.
+  auto missing = [&] {
+    return eject ? packing.size() - result.target : result.target - packing.size();
+  };
   auto eta = [&] { return area_fraction(packing.size(), r, box.area()); };
   auto report = [&](Phase phase) {
     if (options.on_progress) options.on_progress({packing.size(), eta(), phase});
@@ -64,7 +80,7 @@ TuneResult tune(Packing& packing, const PeriodicBox& box, const Target& target, 
   auto run_sweep = [&](const PhasePlan& plan) {
     if (plan.sweep) {
       std::size_t steps = 0;
-      plan.sweep(packing, rng, result.target - packing.size(), [&] {
+      plan.sweep(packing, rng, missing(), [&] {
         if (options.after_operation) options.after_operation(packing);
         if (++steps % 256 == 0) report(plan.phase);
       });
@@ -73,24 +89,24 @@ TuneResult tune(Packing& packing, const PeriodicBox& box, const Target& target, 
     std::vector<DiskId> order = packing.ids();
     for (std::size_t i = order.size(); i > 1; --i) std::swap(order[i - 1], order[uniform_index(rng, i)]);
     const std::size_t tick = std::max<std::size_t>(order.size() / 64, 1);
-    for (std::size_t k = 0; k < order.size() && packing.size() < result.target; ++k) {
+    for (std::size_t k = 0; k < order.size() && missing() > 0; ++k) {
       if (!packing.alive(order[k])) continue;
-      plan.op(packing, order[k], rng, result.target - packing.size());
+      plan.op(packing, order[k], rng, missing());
       if (options.after_operation) options.after_operation(packing);
       if (k % tick == 0) report(plan.phase);
     }
   };
 
-  for (const PhasePlan& plan : plan_for(options)) {
-    if (packing.size() >= result.target) break;
+  for (const PhasePlan& plan : plan_for(options, eject)) {
+    if (missing() == 0) break;
     result.last_phase = plan.phase;
     for (int k = 0; k < options.max_sweeps_per_phase; ++k) {
-      if (packing.size() >= result.target || eta() >= plan.until) break;
+      if (missing() == 0 || (!eject && eta() >= plan.until)) break;
       const std::size_t before = packing.size();
       run_sweep(plan);
       ++result.sweeps;
       report(plan.phase);
-      const double gain = static_cast<double>(packing.size() - before);
+      const double gain = std::abs(static_cast<double>(packing.size()) - static_cast<double>(before));
       if (gain < std::max(options.min_gain_per_sweep * static_cast<double>(before), 0.5)) break;
     }
   }

@@ -49,6 +49,8 @@ std::string to_string(Phase phase) {
     case Phase::repeller_injection: return "repeller injection";
     case Phase::crystal_injection: return "crystal injection";
     case Phase::angle_injection: return "angle injection";
+    case Phase::sift_ejection: return "sifted-disks ejection";
+    case Phase::attractor_ejection: return "attractor ejection";
   }
   return "?";
 }

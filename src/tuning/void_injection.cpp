@@ -25,6 +25,14 @@ bool covers_all(Vec2 c, double r, const std::vector<Corner>& corners) {
   return true;
 }
 
+bool void_free_near(const Packing& packing, Vec2 center, double r) {
+  std::vector<Corner> corners;
+  return !packing.any_near(center, 2 * r * (1 + kRelTol), [&](const Neighbor& n) {
+    corners_on_circle(packing, n.id, corners);
+    return !corners.empty();
+  });
+}
+
 // One end of the diameter pair, chosen at random: a fixed choice would add a
 // direction bias to every injected disk.
 static Vec2 diameter_corner(const std::vector<Corner>& corners, Rng& rng) {

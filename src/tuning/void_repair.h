@@ -19,6 +19,13 @@ std::pair<std::size_t, std::size_t> diameter_pair(const std::vector<Corner>& cor
 /// bound (a void lies in the convex hull of its corners), and nothing needs repair.
 bool covers_all(Vec2 c, double r, const std::vector<Corner>& corners);
 
+/// True when no circle of a disk within 2r of `center` borders a void (no uncovered
+/// corner, no uncovered isolated circle). An exact local maximality check for the
+/// region D(center, r) after disks there were removed; unlike the corners inside the
+/// region alone, it also sees a void with no corner at all (possible when only a few
+/// disks are left).
+bool void_free_near(const Packing& packing, Vec2 center, double r);
+
 /// Restores maximality inside D(center, r) after a disk there was lifted or moved: while
 /// the region holds uncovered corners, injects a disk at one end of their diameter pair
 /// (paper, 2.1). Corners are the only place voids can hide: everything outside the

@@ -1,0 +1,88 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Attractor ejection (paper, 3.1): pull each neighbour q of p as far toward p as it
+// can go while still covering its own void and staying out of every disk but p's;
+// then p is removed if nothing needs it any more, or moved to where it covers what
+// is left, or everything goes back.
+#include <algorithm>
+#include <cmath>
+
+#include "disktune/tuning.h"
+#include "void_repair.h"
+
+namespace disktune {
+namespace {
+
+// How far along q + t v (t in [0, 1]) the disk at q can go: it must keep every corner
+// of its void within r (an interval of t around 0 per corner), and must not enter a
+// disk other than p's and its own (the first entry bounds t).
+double reach_toward(const Packing& packing, DiskId p, const Neighbor& q, Vec2 v,
+                    const std::vector<Corner>& corners, double r) {
+  const double a = squared_norm(v);
+  double t = 1.0;
+  for (const Corner& c : corners) {
+    const Vec2 w = q.image - c.point;
+    const double b = dot(v, w), c0 = std::min(squared_norm(w) - r * r, 0.0);
+    t = std::min(t, (-b + std::sqrt(b * b - a * c0)) / a);
+  }
+  packing.for_each_near(q.image, std::sqrt(a) + r, [&](const Neighbor& k) {
+    if (k.id == p || k.id == q.id) return;
+    const Vec2 w = q.image - k.image;
+    const double b = dot(v, w), c0 = squared_norm(w) - r * r, disc = b * b - a * c0;
+    if (disc <= 0 || b >= 0) return;  // the line misses the disk, or leads away from it
+    t = std::min(t, std::max((-b - std::sqrt(disc)) / a, 0.0));
+  });
+  return t;
+}
+
+}  // namespace
+
+std::size_t attractor_eject(Packing& packing, DiskId p, Rng& rng, std::size_t max_removed) {
+  if (max_removed == 0 || (packing.flags(p) & (kFixed | kFrozen))) return 0;
+  const double r = packing.radius(p);
+  const Vec2 pc = packing.center(p);
+  std::vector<Neighbor> near;
+  packing.for_each_near(pc, 2 * r, [&](const Neighbor& n) {
+    if (n.id == p || (packing.flags(n.id) & (kFixed | kFrozen))) return;
+    for (const Neighbor& m : near) {
+      if (m.id == n.id) return;
+    }
+    near.push_back(n);
+  });
+  for (std::size_t i = near.size(); i > 1; --i) std::swap(near[i - 1], near[uniform_index(rng, i)]);
+
+  detail::UndoLog log(packing);
+  std::vector<Corner> corners;
+  for (const Neighbor& q : near) {
+    corners.clear();
+    corners_in_region(packing, q.image, r, {q.id}, corners);
+    const Vec2 v = pc - q.image;
+    const double t = reach_toward(packing, p, q, v, corners, r);
+    if (t > 0) log.move(q.id, q.image + v * t);  // still covers its void: no repair
+  }
+  corners.clear();
+  corners_in_region(packing, pc, r, {p}, corners);
+  if (corners.empty()) {
+    log.remove(p);  // the neighbours may now cover everything p did
+    if (detail::void_free_near(packing, pc, r)) return 1;
+    log.revert();
+    return 0;
+  }
+  // Otherwise p goes where it alone covers its void's corners: the center of their
+  // smallest enclosing circle, pushed out of a disk it landed in.
+  std::vector<Vec2> points;
+  for (const Corner& c : corners) points.push_back(c.point);
+  const Circle mec = min_enclosing_circle(points);
+  Vec2 z = mec.center;
+  packing.for_each_near(z, r, [&](const Neighbor& k) {
+    if (k.id != p && is_conflict(k.d2, r) && k.d2 > 0) z = k.image + (z - k.image) * (r / std::sqrt(k.d2));
+  });
+  if (mec.radius > r || !detail::covers_all(z, r, corners) || packing.conflicts(z, p)) {
+    log.revert();  // no place for p: everything back
+    return 0;
+  }
+  log.move(p, z);
+  if (!detail::void_free_near(packing, pc, r)) log.revert();
+  return 0;
+}
+
+}  // namespace disktune
