@@ -1,11 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // disktune-tune-bench: from an MPS of the unit periodic square, the time at which
-// disk injection first reaches each area fraction of a list, against CGAL's Delaunay
+// disk injection (or ejection, for fractions below the MPS's) first reaches each area
+// fraction of a list, against CGAL's Delaunay
 // triangulation of as many points, timed in the same run. The phases' path does not
 // depend on the target (only where it stops), so one run to the largest fraction times
 // them all.
 //
-//   disktune-tune-bench [--radius R] [--method auto|void|repeller|crystal] [ETA ...]
+//   disktune-tune-bench [--radius R] [--method auto|void|repeller|crystal|angle|sift|attractor]
+//                       [ETA ...]   (ascending for injection, descending for ejection)
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -30,11 +32,13 @@ int main(int argc, char** argv) {
       r = std::atof(argv[++i]);
     } else if (!std::strcmp(argv[i], "--method") && i + 1 < argc) {
       method_name = argv[++i];
-      method = method_name == "void"       ? Method::void_injection
-               : method_name == "repeller" ? Method::repeller_injection
-               : method_name == "crystal"  ? Method::crystal_injection
-               : method_name == "angle"    ? Method::angle_injection
-                                           : Method::automatic;
+      method = method_name == "void"        ? Method::void_injection
+               : method_name == "repeller"  ? Method::repeller_injection
+               : method_name == "crystal"   ? Method::crystal_injection
+               : method_name == "angle"     ? Method::angle_injection
+               : method_name == "sift"      ? Method::sift_ejection
+               : method_name == "attractor" ? Method::attractor_ejection
+                                            : Method::automatic;
     } else {
       etas.push_back(std::atof(argv[i]));
     }
@@ -46,8 +50,11 @@ int main(int argc, char** argv) {
   auto t0 = std::chrono::steady_clock::now();
   Packing packing = sample_mps(box, r, rng);
   const double mps_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  std::printf("injection from an MPS of the unit periodic square, r = %g, method %s\n", r,
-              method_name.c_str());
+  // Fractions below the MPS's mean ejection: then a fraction is reached when the
+  // count falls to it.
+  const bool eject = etas.back() < area_fraction(packing.size(), r, 1.0);
+  std::printf("%s from an MPS of the unit periodic square, r = %g, method %s\n",
+              eject ? "ejection" : "injection", r, method_name.c_str());
   std::printf("MPS: %zu disks, eta %.4f, %.3f s\n", packing.size(),
               area_fraction(packing.size(), r, 1.0), mps_s);
   std::printf("%8s %10s %12s %12s %10s  %s\n", "eta", "disks", "tune_s", "delaunay_s", "ratio", "phase");
@@ -58,7 +65,8 @@ int main(int argc, char** argv) {
   t0 = std::chrono::steady_clock::now();
   std::vector<std::pair<double, Progress>> reached;  // time and state at each crossing
   options.on_progress = [&](const Progress& p) {
-    while (next < etas.size() && p.count >= count_for_area_fraction(etas[next], r, 1.0)) {
+    auto passed = [&](std::size_t target) { return eject ? p.count <= target : p.count >= target; };
+    while (next < etas.size() && passed(count_for_area_fraction(etas[next], r, 1.0))) {
       reached.push_back({std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), p});
       ++next;
     }
