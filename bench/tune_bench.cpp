@@ -38,6 +38,7 @@ int main(int argc, char** argv) {
                : method_name == "angle"     ? Method::angle_injection
                : method_name == "sift"      ? Method::sift_ejection
                : method_name == "attractor" ? Method::attractor_ejection
+               : method_name == "crystal-eject" ? Method::crystal_ejection
                                             : Method::automatic;
     } else {
       etas.push_back(std::atof(argv[i]));

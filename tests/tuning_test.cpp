@@ -76,7 +76,8 @@ TEST(Ejection, HitsExactCountsWithFallingCountsAndValidStates) {
     const PeriodicBox box(1.0, 0.8);
     Rng rng(seed);
     const Packing mps = sample_mps(box, 0.05, rng);
-    for (const Method m : {Method::automatic, Method::sift_ejection, Method::attractor_ejection}) {
+    for (const Method m : {Method::automatic, Method::sift_ejection, Method::attractor_ejection,
+                           Method::crystal_ejection}) {
       for (const std::size_t fewer : {1u, 9u, 35u}) {
         Packing p = mps;
         std::size_t last = p.size();
@@ -99,11 +100,35 @@ TEST(Ejection, HitsExactCountsWithFallingCountsAndValidStates) {
   }
 }
 
+TEST(Ejection, CrystalEjectionKeepsTheInvariantsAfterEveryStep) {
+  for (const auto& [w, h, r] : {std::tuple{1.0, 1.0, 0.04}, {1.5, 0.7, 0.05}}) {
+    for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+      const PeriodicBox box(w, h);
+      Rng rng(seed);
+      Packing p = sample_mps(box, r, rng);
+      const std::size_t start = p.size();
+      std::size_t last = start;
+      int steps = 0;
+      const std::size_t removed = crystal_eject(p, rng, 100000, [&] {
+        ASSERT_LE(p.size(), last);
+        last = p.size();
+        if (++steps % 9 == 0) {
+          ASSERT_TRUE(valid(box, p, steps)) << w << "x" << h << " seed " << seed;
+        }
+      });
+      EXPECT_EQ(p.size(), start - removed);
+      EXPECT_GT(removed, start / 5) << w << "x" << h << " seed " << seed;
+      ASSERT_TRUE(valid(box, p, seed));
+    }
+  }
+}
+
 TEST(Ejection, PhasesAloneReachTheirPlateaus) {
   const PeriodicBox box;
   Rng rng(3);
   const Packing mps = sample_mps(box, 0.03, rng);
-  for (const auto& [m, eta_max] : {std::pair{Method::sift_ejection, 0.46}, {Method::attractor_ejection, 0.37}}) {
+  for (const auto& [m, eta_max] : {std::pair{Method::sift_ejection, 0.46}, {Method::attractor_ejection, 0.37},
+                                   {Method::crystal_ejection, 0.40}}) {
     Packing p = mps;
     TuneOptions opt;
     opt.method = m;

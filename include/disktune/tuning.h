@@ -39,7 +39,8 @@ enum class Phase {
   crystal_injection,
   angle_injection,
   sift_ejection,
-  attractor_ejection
+  attractor_ejection,
+  crystal_ejection
 };
 std::string to_string(Phase phase);
 
@@ -56,7 +57,8 @@ enum class Method {
   crystal_injection,
   angle_injection,
   sift_ejection,
-  attractor_ejection
+  attractor_ejection,
+  crystal_ejection
 };
 
 struct Progress {
@@ -124,6 +126,13 @@ std::size_t repel_from(Packing& packing, Vec2 point, DiskId self, Rng& rng, std:
 /// that changed the packing. Returns the number of disks added.
 std::size_t crystal_inject(Packing& packing, Rng& rng, std::size_t max_added,
                            const std::function<void()>& after_step = {});
+
+/// Crystal-growth ejection (3.2): as crystal_inject, with the lattice spacing sqrt(3) r
+/// of the sparsest covering: a mobile disk covering a site moves there, the disks it
+/// conflicts with are deleted and the voids left refilled. Steps that would raise the
+/// count or remove more than max_removed are taken back. Returns the number removed.
+std::size_t crystal_eject(Packing& packing, Rng& rng, std::size_t max_removed,
+                          const std::function<void()>& after_step = {});
 
 /// Sifted-disks ejection (section 3): p and one overlapping neighbour are replaced by a
 /// single disk that covers what they covered (random where there is a choice). Returns

@@ -33,6 +33,7 @@ Method method_named(const std::string& name) {
   if (name == "angle") return Method::angle_injection;
   if (name == "sift") return Method::sift_ejection;
   if (name == "attractor") return Method::attractor_ejection;
+  if (name == "crystal-eject") return Method::crystal_ejection;
   return Method::automatic;
 }
 
@@ -97,10 +98,12 @@ void add_tune_command(CLI::App& app, Action& action) {
   fraction->excludes(rho);
   cmd->add_option("--method", args->method,
                   "auto: denser by void, then repeller, then crystal injection (switching at eta "
-                  "0.75 and 0.79, or when a phase stalls), sparser by sifting, then attractor "
-                  "ejection; or one phase alone: void, repeller, crystal, angle (repel from the "
-                  "circumcenters of obtuse Delaunay triangles), sift, attractor")
-      ->check(CLI::IsMember({"auto", "void", "repeller", "crystal", "angle", "sift", "attractor"}))
+                  "0.75 and 0.79, or when a phase stalls), sparser by sifting, then attractor, then "
+                  "crystal ejection; or one phase alone: void, repeller, crystal, angle (repel "
+                  "from the circumcenters of obtuse Delaunay triangles), sift, attractor, "
+                  "crystal-eject")
+      ->check(CLI::IsMember(
+          {"auto", "void", "repeller", "crystal", "angle", "sift", "attractor", "crystal-eject"}))
       ->capture_default_str();
   cmd->add_option("--input,-i", args->input,
                   "Start from this CSV (x,y,r; a conflict-free maximal packing) instead of a new MPS");

@@ -34,8 +34,10 @@ std::vector<PhasePlan> plan_for(const TuneOptions& o, bool eject) {
   const PhasePlan angle_phase{Phase::angle_injection, nullptr, &angle_inject, 2.0};
   const PhasePlan sift_phase{Phase::sift_ejection, &sift_eject, nullptr, 2.0};
   const PhasePlan attractor_phase{Phase::attractor_ejection, &attractor_eject, nullptr, 2.0};
+  const PhasePlan crystal_eject_phase{Phase::crystal_ejection, nullptr, &crystal_eject, 2.0};
   auto alone = [](PhasePlan p) { return p.until = 2.0, std::vector<PhasePlan>{p}; };
-  const bool ejects = o.method == Method::sift_ejection || o.method == Method::attractor_ejection;
+  const bool ejects = o.method == Method::sift_ejection || o.method == Method::attractor_ejection ||
+                      o.method == Method::crystal_ejection;
   if (o.method != Method::automatic && ejects != eject) {
     throw InvalidInput(eject ? "tune: the target is below the current count, but the method adds "
                                "disks; use an ejection method (or automatic)"
@@ -44,7 +46,7 @@ std::vector<PhasePlan> plan_for(const TuneOptions& o, bool eject) {
   }
   switch (o.method) {
     case Method::automatic:
-      if (eject) return {sift_phase, attractor_phase};
+      if (eject) return {sift_phase, attractor_phase, crystal_eject_phase};
       return {void_phase, repeller_phase, crystal_phase};
     case Method::void_injection: return alone(void_phase);
     case Method::repeller_injection: return alone(repeller_phase);
@@ -52,6 +54,7 @@ std::vector<PhasePlan> plan_for(const TuneOptions& o, bool eject) {
     case Method::angle_injection: return alone(angle_phase);
     case Method::sift_ejection: return alone(sift_phase);
     case Method::attractor_ejection: return alone(attractor_phase);
+    case Method::crystal_ejection: return alone(crystal_eject_phase);
   }
   return {};
 }

@@ -51,6 +51,7 @@ std::string to_string(Phase phase) {
     case Phase::angle_injection: return "angle injection";
     case Phase::sift_ejection: return "sifted-disks ejection";
     case Phase::attractor_ejection: return "attractor ejection";
+    case Phase::crystal_ejection: return "crystal ejection";
   }
   return "?";
 }

@@ -1,0 +1,207 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Crystal growth (paper, 2.3 and 3.2). A hexagonal crystal of frozen disks with
+// spacing s grows over the domain: s = r for injection (the densest packing, eta
+// 0.9069), s = sqrt(3) r for ejection (the sparsest covering, eta 0.3023). Attractors
+// are the lattice sites next to the crystal: the intersections of the radius-s circles
+// around frozen disks at distance s (intersections with farther frozen disks would grow
+// a looser random packing instead; measured eta 0.79 for injection). A mobile disk that
+// covers an attractor moves there and freezes; the disks it would conflict with are
+// deleted and the voids left are refilled. For injection, an attractor no disk covers
+// gets a new frozen disk at once (Fig. 4, "inject immediately"). Attractors are taken in
+// random order from the crystal's front (the paper allows visiting the disks near
+// attractors instead of all disks), so one crystal grows over the box.
+#include <algorithm>
+#include <cmath>
+
+#include "disktune/tuning.h"
+#include "void_repair.h"
+
+namespace disktune {
+namespace {
+
+// Attractor points with a grid for "is there one here already".
+class Attractors {
+ public:
+  Attractors(const Frame& frame, double r) : grid_(frame, r), r_(r) {}
+  bool empty() const { return live_.empty(); }
+  void add(Vec2 a) {
+    a = grid_.frame().wrap(a);
+    if (grid_.any_near(a, 1e-7 * r_, [](const Neighbor&) { return true; })) return;
+    const auto id = static_cast<DiskId>(points_.size());
+    points_.push_back(a);
+    grid_.insert(id, a, 0.0);
+    live_.push_back(id);
+  }
+  Vec2 take_random(Rng& rng) {
+    const std::size_t i = uniform_index(rng, live_.size());
+    const DiskId id = live_[i];
+    live_[i] = live_.back();
+    live_.pop_back();
+    grid_.remove(id, points_[id]);
+    return points_[id];
+  }
+
+ private:
+  SpatialGrid grid_;
+  double r_;
+  std::vector<Vec2> points_;
+  std::vector<DiskId> live_;
+};
+
+bool mobile(const Packing& p, DiskId id) { return !(p.flags(id) & (kFixed | kFrozen)); }
+
+class Crystal {
+ public:
+  Crystal(Packing& packing, Rng& rng, bool inject)
+      : p_(packing),
+        rng_(rng),
+        r_(packing.max_radius()),
+        s_(inject ? r_ : std::sqrt(3.0) * r_),
+        inject_(inject),
+        attractors_(packing.frame(), r_) {}
+
+  // A site is taken when it lies strictly inside a frozen disk (injection) or closer
+  // than the spacing to a frozen center (ejection: the lattice there is already built).
+  bool taken(Vec2 a) const {
+    const double lim = s_ * (1 - kLattice);
+    return p_.any_near(a, s_, [&](const Neighbor& n) {
+      return (p_.flags(n.id) & kFrozen) && n.d2 < lim * lim;
+    });
+  }
+
+  // Freezes disk `id` (now at `at`, in any frame) and adds the sites its lattice
+  // neighbours (frozen disks at distance s) make with it.
+  void freeze(detail::UndoLog& log, DiskId id, Vec2 at) {
+    log.set_flags(id, p_.flags(id) | kFrozen);
+    const double lo = s_ * s_ * (1 - kLattice), hi = s_ * s_ * (1 + kLattice);
+    p_.for_each_near(at, s_ * (1 + kLattice), [&](const Neighbor& f) {
+      if (f.id == id || !(p_.flags(f.id) & kFrozen) || f.d2 < lo || f.d2 > hi) return;
+      const CircleIntersection x = intersect_circles(at, s_, f.image, s_);
+      for (int k = 0; k < x.count; ++k) {
+        if (!taken(x.points[k])) attractors_.add(x.points[k]);
+      }
+    });
+  }
+
+  // Brings a disk to site a and freezes it: the nearest mobile disk covering a moves
+  // there (the disks it would conflict with go, their voids are refilled), or, when
+  // injecting and nothing mobile covers a, a new disk is put there if there is room.
+  // False when nothing could be done.
+  bool settle(detail::UndoLog& log, Vec2 a, std::size_t room) {
+    Neighbor mover{kNoDisk, {}, 0, 0};
+    p_.for_each_near(a, r_ * (1 + kRelTol), [&](const Neighbor& n) {
+      if (mobile(p_, n.id) && is_covered(n.d2, n.radius) && (mover.id == kNoDisk || n.d2 < mover.d2)) {
+        mover = n;
+      }
+    });
+    if (mover.id == kNoDisk) {
+      if (!inject_ || p_.conflicts(a)) return false;
+      freeze(log, log.insert(a, r_), a);
+      return true;
+    }
+    std::vector<DiskId> doomed;
+    std::vector<Vec2> holes{mover.image};
+    p_.for_each_near(a, r_, [&](const Neighbor& n) {
+      if (n.id != mover.id && is_conflict(n.d2, n.radius) &&
+          std::find(doomed.begin(), doomed.end(), n.id) == doomed.end()) {
+        doomed.push_back(n.id);
+        holes.push_back(n.image);
+      }
+    });
+    for (const DiskId x : doomed) log.remove(x);
+    log.move(mover.id, a);
+    for (const Vec2& h : holes) detail::repair_void(log, p_, h, r_, rng_, room + doomed.size());
+    freeze(log, mover.id, a);
+    return true;
+  }
+
+  // Two disks at distance s: an existing mobile pair (injected disks often sit exactly
+  // r apart), or a random mobile disk and a disk brought to a random site at distance s.
+  bool seed(detail::UndoLog& log, std::size_t room) {
+    std::vector<DiskId> order = p_.ids();
+    for (std::size_t i = order.size(); i > 1; --i) std::swap(order[i - 1], order[uniform_index(rng_, i)]);
+    const double lo = s_ * s_ * (1 - 4 * kRelTol), hi = s_ * s_ * (1 + 4 * kRelTol);
+    for (const DiskId a : order) {
+      if (!mobile(p_, a)) continue;
+      Neighbor partner{kNoDisk, {}, 0, 0};
+      p_.for_each_near(p_.center(a), s_ * (1 + 4 * kRelTol), [&](const Neighbor& n) {
+        if (n.id != a && mobile(p_, n.id) && n.d2 >= lo && n.d2 <= hi) partner = n;
+      });
+      if (partner.id == kNoDisk) continue;
+      freeze(log, a, p_.center(a));
+      freeze(log, partner.id, partner.image);
+      return true;
+    }
+    for (const DiskId a : order) {
+      if (!mobile(p_, a)) continue;
+      const double angle = 2 * 3.14159265358979323846 * uniform01(rng_);
+      freeze(log, a, p_.center(a));
+      if (settle(log, p_.center(a) + Vec2{std::cos(angle), std::sin(angle)} * s_, room)) return true;
+      log.revert();
+    }
+    return false;
+  }
+
+  // Grows the crystal; returns the change in the count (its absolute value).
+  std::size_t grow(std::size_t max_change, const std::function<void()>& after_step) {
+    const std::size_t start = p_.size();
+    auto within = [&](std::size_t n) {  // never past the target
+      return inject_ ? n <= start + max_change : n + max_change >= start;
+    };
+    detail::UndoLog batch(p_);
+    if (max_change == 0 || !seed(batch, max_change) || !within(p_.size())) {
+      batch.revert();
+      return 0;
+    }
+    // A step can move the count the wrong way (deleting disks near a dense site may
+    // leave less room than they took; refilling voids near a sparse site adds disks).
+    // Steps are kept in a batch that is committed whenever the count is back at or past
+    // where the last commit left it, so committed states never go the wrong way; a
+    // batch still behind at the end is taken back.
+    std::size_t committed = start;
+    auto ahead = [&] { return inject_ ? p_.size() >= committed : p_.size() <= committed; };
+    if (ahead()) batch.commit(), committed = p_.size();
+    while (!attractors_.empty() && p_.size() != (inject_ ? start + max_change : start - max_change)) {
+      const Vec2 a = attractors_.take_random(rng_);
+      if (taken(a)) continue;
+      const std::size_t step = batch.mark();
+      const std::size_t room = inject_ ? start + max_change - std::min(p_.size(), start + max_change)
+                                       : max_change;
+      if (!settle(batch, a, room)) continue;
+      if (!within(p_.size())) {
+        batch.revert_to(step);
+        continue;
+      }
+      if (ahead()) {
+        batch.commit();
+        committed = p_.size();
+        if (after_step) after_step();
+      }
+    }
+    batch.revert();
+    return inject_ ? p_.size() - start : start - p_.size();
+  }
+
+ private:
+  static constexpr double kLattice = 1e-6;  // far above rounding drift, far below any lattice gap
+
+  Packing& p_;
+  Rng& rng_;
+  double r_, s_;
+  bool inject_;
+  Attractors attractors_;
+};
+
+}  // namespace
+
+std::size_t crystal_inject(Packing& packing, Rng& rng, std::size_t max_added,
+                           const std::function<void()>& after_step) {
+  return Crystal(packing, rng, true).grow(max_added, after_step);
+}
+
+std::size_t crystal_eject(Packing& packing, Rng& rng, std::size_t max_removed,
+                          const std::function<void()>& after_step) {
+  return Crystal(packing, rng, false).grow(max_removed, after_step);
+}
+
+}  // namespace disktune
