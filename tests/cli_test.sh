@@ -114,6 +114,21 @@ printf 'x,y,r\n' >empty.csv
 expect report-empty 2 "empty.csv. holds no disks" -- "$bin" report empty.csv --radius 0.05
 expect report-missing 3 "cannot read" -- "$bin" report no-such.csv --radius 0.05
 expect report-bad-folder 3 "does not exist" -- "$bin" report q.csv --radius 0.05 --json no/such/q.json
+# the spectrum and the pictures
+grep -q '"effective_nyquist"' q.json && pass=$((pass + 1)) || { echo "FAIL report spectrum key"; fails=$((fails + 1)); }
+mkdir pics
+expect report-png 0 "^spectrum: window \|k\| < [0-9]+" -- "$bin" report q.csv --radius 0.05 --png-dir pics
+for f in spectrum radial_mean anisotropy angles edges; do
+  [ -s "pics/$f.png" ] && head -c 8 "pics/$f.png" | grep -q PNG && pass=$((pass + 1)) || { echo "FAIL pics/$f.png"; fails=$((fails + 1)); }
+done
+[ "$(ls pics | wc -l)" -eq 5 ] && pass=$((pass + 1)) || { echo "FAIL pics: other files left"; fails=$((fails + 1)); }
+expect report-png-missing-folder 3 "picture folder 'nopics' does not exist" -- "$bin" report q.csv --radius 0.05 --json never.json --png-dir nopics
+absent report-png-missing-folder-json never.json
+absent report-png-missing-folder-dir nopics
+expect report-no-spectrum 0 "^report: " -- "$bin" report q.csv --radius 0.05 --json ns.json --no-spectrum
+grep -q '"spectrum"' ns.json && { echo "FAIL --no-spectrum wrote a spectrum"; fails=$((fails + 1)); } || pass=$((pass + 1))
+expect report-spectrum-window 0 "window \|k\| < 9 " -- "$bin" report q.csv --radius 0.05 --spectrum-window 9
+expect report-spectrum-window-bad 2 "too small" -- "$bin" report q.csv --radius 0.05 --spectrum-window 1
 
 echo "$pass passed, $fails failed"
 [ "$fails" -eq 0 ]

@@ -6,13 +6,16 @@
 #include <string>
 
 #include "disktune/quality.h"
+#include "disktune/spectrum.h"
 
 namespace disktune {
 
-/// The report as a JSON document (two-space indented).
-std::string quality_json(const QualityReport& report);
+/// The report as a JSON document (two-space indented), with the key `spectrum` when a
+/// spectrum is given (its summary: radial mean, anisotropy, peak, effective Nyquist).
+std::string quality_json(const QualityReport& report, const Spectrum* spectrum = nullptr);
 
-/// Writes quality_json(report) to `path` through write_file_atomically.
-void write_quality_json(const std::string& path, const QualityReport& report);
+/// Writes quality_json(report, spectrum) to `path` through write_file_atomically.
+void write_quality_json(const std::string& path, const QualityReport& report,
+                        const Spectrum* spectrum = nullptr);
 
 }  // namespace disktune

@@ -1,8 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // `disktune report`: quality measures of a packing and its periodic Delaunay mesh
-// (docs/quality.md), as a summary line, a JSON file and an SVG picture.
+// and its spectrum (docs/quality.md), as summary lines, a JSON file, an SVG picture and
+// PNG pictures.
+#include <chrono>
 #include <cstdio>
 #include <memory>
+#include <optional>
 
 #include "commands.h"
 #include "disktune/errors.h"
@@ -11,6 +14,8 @@
 #include "disktune/mesh_io.h"
 #include "disktune/quality.h"
 #include "disktune/quality_json.h"
+#include "disktune/report_pictures.h"
+#include "disktune/spectrum.h"
 
 namespace disktune::cli {
 namespace {
@@ -18,17 +23,35 @@ namespace {
 struct ReportArgs {
   std::string input;
   DomainArgs domain;
-  std::string json, svg;
+  std::string json, svg, png_dir;
+  bool no_spectrum = false;
+  int spectrum_window = 0;  // 0: automatic
 };
 
 int run_report(const ReportArgs& args) {
   check_output_folder(args.json);
   check_output_folder(args.svg);
+  if (!args.png_dir.empty()) check_picture_folder(args.png_dir);
   const PeriodicBox box(args.domain.width, args.domain.height);
   const Packing packing = read_packing_csv(args.input, box, args.domain.radius);
+  std::optional<Spectrum> spectrum;
+  if (!args.no_spectrum) {
+    const auto start = std::chrono::steady_clock::now();
+    SpectrumOptions options;
+    options.window = args.spectrum_window;
+    spectrum = measure_spectrum(packing, options);
+    const std::chrono::duration<double> took = std::chrono::steady_clock::now() - start;
+    std::printf(
+        "spectrum: window |k| < %d (rings to frequency %.2f), peak power %.2f at %.3f, "
+        "effective Nyquist %.3f, %.2f s\n",
+        spectrum->window, spectrum->reach(), spectrum->peak_power, spectrum->peak_frequency,
+        spectrum->effective_nyquist, took.count());
+  }
   const TriangleMesh mesh = periodic_delaunay(packing);
   const QualityReport q = measure_quality(packing, mesh, args.domain.radius);
-  if (!args.json.empty()) write_quality_json(args.json, q);
+  const Spectrum* s = spectrum ? &*spectrum : nullptr;
+  if (!args.json.empty()) write_quality_json(args.json, q, s);
+  if (!args.png_dir.empty()) write_report_pictures(args.png_dir, q, s);
   if (!args.svg.empty()) write_mesh_svg(args.svg, mesh, packing);
   std::printf(
       "report: %zu disks, eta = %.4f, rho = %.4f, %s, %s, distance >= %.4f r, "
@@ -47,11 +70,20 @@ void add_report_command(CLI::App& app, Action& action) {
   CLI::App* cmd = app.add_subcommand(
       "report",
       "Measure a packing (CSV x,y,r) and its periodic Delaunay mesh: density, spacing, "
-      "coverage, maximality, angles, edge lengths, local beta, Voronoi cells (docs/quality.md).");
+      "coverage, maximality, angles, edge lengths, local beta, Voronoi cells, spectrum "
+      "(docs/quality.md).");
   cmd->add_option("points", args->input, "CSV file of the packing (header x,y,r)")->required();
   add_domain_options(cmd, args->domain);
   cmd->add_option("--json", args->json, "Write the full report (with histograms) as JSON");
   cmd->add_option("--svg", args->svg, "Draw the mesh over the disks (at r/2) as an SVG picture");
+  cmd->add_option("--png-dir", args->png_dir,
+                  "Write spectrum.png, radial_mean.png, anisotropy.png, angles.png and edges.png "
+                  "into this existing folder");
+  cmd->add_flag("--no-spectrum", args->no_spectrum, "Skip the spectrum (seconds for 1e5 disks)");
+  cmd->add_option("--spectrum-window", args->spectrum_window,
+                  "Spectrum frequencies |kx|, |ky| < K (default: reach normalised frequency 3, "
+                  "capped at N K (2K-1) <= 1e10)")
+      ->check(CLI::NonNegativeNumber);
   cmd->callback([args, &action] { action = [args] { return run_report(*args); }; });
 }
 

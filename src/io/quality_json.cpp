@@ -20,7 +20,7 @@ json to_json(const Statistics& s) {
 
 }  // namespace
 
-std::string quality_json(const QualityReport& q) {
+std::string quality_json(const QualityReport& q, const Spectrum* spectrum) {
   json j;
   j["radius"] = q.radius;
   j["box"] = {{"width", q.width}, {"height", q.height}};
@@ -49,11 +49,22 @@ std::string quality_json(const QualityReport& q) {
   j["voronoi"] = {{"aspect_ratio", to_json(q.voronoi.aspect_ratio)},
                   {"cell_area", to_json(q.voronoi.cell_area)},
                   {"cell_area_cv", q.voronoi.cell_area_cv}};
+  if (spectrum) {
+    const Spectrum& s = *spectrum;
+    j["spectrum"] = {{"window", s.window},
+                     {"frequency_unit", s.frequency_unit},
+                     {"radial_mean", s.radial_mean},
+                     {"anisotropy_db", s.anisotropy_db},
+                     {"peak_power", s.peak_power},
+                     {"peak_frequency", s.peak_frequency},
+                     {"effective_nyquist", s.effective_nyquist}};
+  }
   return j.dump(2) + "\n";
 }
 
-void write_quality_json(const std::string& path, const QualityReport& report) {
-  const std::string text = quality_json(report);
+void write_quality_json(const std::string& path, const QualityReport& report,
+                        const Spectrum* spectrum) {
+  const std::string text = quality_json(report, spectrum);
   write_file_atomically(path, [&](std::ostream& out) { out << text; });
 }
 

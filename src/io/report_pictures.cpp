@@ -1,0 +1,107 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "disktune/report_pictures.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <utility>
+#include <vector>
+
+#include "disktune/errors.h"
+#include "plot.h"
+#include "raster.h"
+
+namespace disktune {
+namespace {
+
+using detail::Plot;
+using detail::Raster;
+using detail::Rgb;
+
+constexpr int kWidth = 640, kHeight = 400;
+constexpr Rgb kBlue{31, 90, 180};
+// The spectrum's gray scale: log10 P from -2 (black) to 1 (white). A maximal sample's
+// low-frequency gap (P ~ 0.01) is black, its ring (P ~ 2) light, a lattice peak white.
+constexpr double kLogLo = -2, kLogHi = 1;
+
+Raster spectrum_image(const Spectrum& s) {
+  const int side = s.side(), K = s.window;
+  const int zoom = (512 + side - 1) / side;  // at least 512 pixels: small windows in blocks
+  Raster r(side * zoom, side * zoom, {0, 0, 0});
+  for (int row = 0; row < side; ++row) {
+    for (int col = 0; col < side; ++col) {
+      const double p = s.at(col - (K - 1), (K - 1) - row);  // top row is the highest ky
+      const double t = p > 0 ? (std::log10(p) - kLogLo) / (kLogHi - kLogLo) : 0;
+      const auto g = static_cast<std::uint8_t>(std::lround(255 * std::clamp(t, 0.0, 1.0)));
+      r.fill_rect(col * zoom, row * zoom, col * zoom + zoom - 1, row * zoom + zoom - 1, {g, g, g});
+    }
+  }
+  return r;
+}
+
+/// The y range covers [y_lo, y_hi] and the data, but stops at y_cap, so that a lattice's
+/// spikes do not flatten the rest (lines past the cap leave through the frame).
+Raster line_plot(const std::vector<std::array<double, 2>>& points, double reference, double y_lo,
+                 double y_hi, double y_cap) {
+  double x_hi = 0;
+  for (const auto& p : points) {
+    x_hi = std::max(x_hi, p[0]);
+    y_lo = std::max(std::min(y_lo, p[1]), -y_cap);
+    y_hi = std::min(std::max(y_hi, p[1]), y_cap);
+  }
+  Plot plot(kWidth, kHeight, 0, x_hi, y_lo, y_hi);
+  plot.reference(reference);
+  plot.polyline(points, kBlue);
+  plot.axes();
+  return plot.raster();
+}
+
+/// The histogram's bars over the span of its non-empty bins (overflow not drawn).
+Raster histogram_plot(const Histogram& h) {
+  if (h.counts.empty()) return Plot(kWidth, kHeight, 0, 1, 0, 1).raster();
+  std::size_t first = h.counts.size(), last = 0, top = 1;
+  for (std::size_t k = 0; k < h.counts.size(); ++k) {
+    if (h.counts[k] == 0) continue;
+    first = std::min(first, k);
+    last = k;
+    top = std::max(top, h.counts[k]);
+  }
+  if (first > last) first = 0, last = h.counts.size() - 1;  // empty: show the whole range
+  const std::size_t pad = std::max<std::size_t>(2, (last - first) / 10);
+  first = first > pad ? first - pad : 0;
+  last = std::min(last + pad, h.counts.size() - 1);
+  Plot plot(kWidth, kHeight, h.lo + first * h.bin_width, h.lo + (last + 1) * h.bin_width, 0,
+            1.05 * static_cast<double>(top));
+  for (std::size_t k = first; k <= last; ++k) {
+    const double x = h.lo + k * h.bin_width;
+    plot.bar(x, x + h.bin_width, static_cast<double>(h.counts[k]), kBlue);
+  }
+  plot.axes();
+  return plot.raster();
+}
+
+}  // namespace
+
+void check_picture_folder(const std::string& dir) {
+  std::error_code ec;
+  if (dir.empty() || !std::filesystem::is_directory(dir, ec)) {
+    throw IoError("the picture folder '" + dir + "' does not exist: create it first (mkdir -p " +
+                  dir + ") or name another folder");
+  }
+}
+
+void write_report_pictures(const std::string& dir, const QualityReport& report,
+                           const Spectrum* spectrum) {
+  check_picture_folder(dir);
+  std::vector<std::pair<std::string, Raster>> pictures;
+  pictures.emplace_back("angles.png", histogram_plot(report.angles.histogram));
+  pictures.emplace_back("edges.png", histogram_plot(report.edges.histogram));
+  if (spectrum) {
+    pictures.emplace_back("spectrum.png", spectrum_image(*spectrum));
+    pictures.emplace_back("radial_mean.png", line_plot(spectrum->radial_mean, 1, 0, 2, 4));
+    pictures.emplace_back("anisotropy.png", line_plot(spectrum->anisotropy_db, 0, -10, 10, 30));
+  }
+  for (const auto& [name, raster] : pictures) detail::write_png(dir + "/" + name, raster);
+}
+
+}  // namespace disktune

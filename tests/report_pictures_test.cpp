@@ -1,0 +1,121 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The report's PNG pictures: decoded here with libpng, of the expected size and not
+// blank; a missing folder is refused before anything is written.
+#include "disktune/report_pictures.h"
+
+#include <gtest/gtest.h>
+#include <png.h>
+
+#include <filesystem>
+#include <set>
+#include <vector>
+
+#include "disktune/errors.h"
+#include "disktune/sampling.h"
+
+namespace disktune {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct TempDir {
+  fs::path path =
+      fs::temp_directory_path() /
+      ("disktune_png_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "_" +
+       ::testing::UnitTest::GetInstance()->current_test_info()->name());
+  TempDir() { fs::create_directories(path); }
+  ~TempDir() { fs::remove_all(path); }
+};
+
+struct Decoded {
+  unsigned width = 0, height = 0;
+  std::vector<unsigned char> rgb;
+};
+
+Decoded decode(const fs::path& file) {
+  png_image image{};
+  image.version = PNG_IMAGE_VERSION;
+  Decoded d;
+  if (!png_image_begin_read_from_file(&image, file.c_str())) {
+    ADD_FAILURE() << file << ": " << image.message;
+    return d;
+  }
+  image.format = PNG_FORMAT_RGB;
+  d.rgb.resize(PNG_IMAGE_SIZE(image));
+  if (!png_image_finish_read(&image, nullptr, d.rgb.data(), 0, nullptr)) {
+    ADD_FAILURE() << file << ": " << image.message;
+    return d;
+  }
+  d.width = image.width;
+  d.height = image.height;
+  return d;
+}
+
+std::size_t distinct_colors(const Decoded& d) {
+  std::set<unsigned> colors;
+  for (std::size_t i = 0; i + 2 < d.rgb.size(); i += 3) {
+    colors.insert(d.rgb[i] << 16 | d.rgb[i + 1] << 8 | d.rgb[i + 2]);
+  }
+  return colors.size();
+}
+
+TEST(ReportPictures, WritesFiveDecodablePictures) {
+  const PeriodicBox box(1, 1);
+  Rng rng(4);
+  const Packing p = sample_mps(box, 0.03, rng);
+  const QualityReport q = measure_quality(p, periodic_delaunay(p), 0.03);
+  const Spectrum s = measure_spectrum(p);
+  TempDir dir;
+  write_report_pictures(dir.path.string(), q, &s);
+  for (const char* name : {"angles.png", "edges.png", "radial_mean.png", "anisotropy.png"}) {
+    const Decoded d = decode(dir.path / name);
+    EXPECT_EQ(d.width, 640u) << name;
+    EXPECT_EQ(d.height, 400u) << name;
+    EXPECT_GE(distinct_colors(d), 3u) << name;  // white, black axes, blue data
+  }
+  const Decoded image = decode(dir.path / "spectrum.png");
+  const unsigned side = static_cast<unsigned>(s.side());
+  EXPECT_EQ(image.width, image.height);
+  EXPECT_EQ(image.width % side, 0u);
+  EXPECT_GE(image.width, 512u);
+  EXPECT_GT(distinct_colors(image), 50u);  // a gray ramp, not a flat picture
+  // DC at the center, set to 0: black.
+  const std::size_t c =
+      (image.height / 2 * static_cast<std::size_t>(image.width) + image.width / 2) * 3;
+  EXPECT_EQ(image.rgb[c], 0);
+  std::size_t files = 0;
+  for (const auto& entry : fs::directory_iterator(dir.path)) files += entry.is_regular_file();
+  EXPECT_EQ(files, 5u);  // and no temporaries left
+}
+
+TEST(ReportPictures, WithoutASpectrumWritesTheHistogramsOnly) {
+  const PeriodicBox box(1, 1);
+  Rng rng(5);
+  const Packing p = sample_mps(box, 0.05, rng);
+  const QualityReport q = measure_quality(p, periodic_delaunay(p), 0.05);
+  TempDir dir;
+  write_report_pictures(dir.path.string(), q);
+  EXPECT_TRUE(fs::exists(dir.path / "angles.png"));
+  EXPECT_TRUE(fs::exists(dir.path / "edges.png"));
+  EXPECT_FALSE(fs::exists(dir.path / "spectrum.png"));
+}
+
+TEST(ReportPictures, RefusesAMissingFolder) {
+  const PeriodicBox box(1, 1);
+  Rng rng(6);
+  const Packing p = sample_mps(box, 0.05, rng);
+  const QualityReport q = measure_quality(p, periodic_delaunay(p), 0.05);
+  TempDir dir;
+  const fs::path missing = dir.path / "no" / "such";
+  try {
+    write_report_pictures(missing.string(), q);
+    FAIL() << "no error";
+  } catch (const IoError& e) {
+    EXPECT_NE(std::string(e.what()).find("does not exist"), std::string::npos) << e.what();
+  }
+  EXPECT_TRUE(fs::is_empty(dir.path));
+  EXPECT_THROW(check_picture_folder(""), IoError);
+}
+
+}  // namespace
+}  // namespace disktune
