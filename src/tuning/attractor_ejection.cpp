@@ -36,8 +36,11 @@ double reach_toward(const Packing& packing, DiskId p, const Neighbor& q, Vec2 v,
 
 }  // namespace
 
-std::size_t attractor_eject(Packing& packing, DiskId p, Rng& rng, std::size_t max_removed) {
+namespace detail {
+
+std::size_t attractor_eject(UndoLog& log, Packing& packing, DiskId p, Rng& rng, std::size_t max_removed) {
   if (max_removed == 0 || (packing.flags(p) & (kFixed | kFrozen))) return 0;
+  const std::size_t mark = log.mark();
   const double r = packing.radius(p);
   const Vec2 pc = packing.center(p);
   std::vector<Neighbor> near;
@@ -50,7 +53,6 @@ std::size_t attractor_eject(Packing& packing, DiskId p, Rng& rng, std::size_t ma
   });
   for (std::size_t i = near.size(); i > 1; --i) std::swap(near[i - 1], near[uniform_index(rng, i)]);
 
-  detail::UndoLog log(packing);
   std::vector<Corner> corners;
   for (const Neighbor& q : near) {
     corners.clear();
@@ -63,8 +65,8 @@ std::size_t attractor_eject(Packing& packing, DiskId p, Rng& rng, std::size_t ma
   corners_in_region(packing, pc, r, {p}, corners);
   if (corners.empty()) {
     log.remove(p);  // the neighbours may now cover everything p did
-    if (detail::void_free_near(packing, pc, r)) return 1;
-    log.revert();
+    if (void_free_near(packing, pc, r)) return 1;
+    log.revert_to(mark);
     return 0;
   }
   // Otherwise p goes where it alone covers its void's corners: the center of their
@@ -76,13 +78,20 @@ std::size_t attractor_eject(Packing& packing, DiskId p, Rng& rng, std::size_t ma
   packing.for_each_near(z, r, [&](const Neighbor& k) {
     if (k.id != p && is_conflict(k.d2, r) && k.d2 > 0) z = k.image + (z - k.image) * (r / std::sqrt(k.d2));
   });
-  if (mec.radius > r || !detail::covers_all(z, r, corners) || packing.conflicts(z, p)) {
-    log.revert();  // no place for p: everything back
+  if (mec.radius > r || !covers_all(z, r, corners) || packing.conflicts(z, p)) {
+    log.revert_to(mark);  // no place for p: everything back
     return 0;
   }
   log.move(p, z);
-  if (!detail::void_free_near(packing, pc, r)) log.revert();
+  if (!void_free_near(packing, pc, r)) log.revert_to(mark);
   return 0;
+}
+
+}  // namespace detail
+
+std::size_t attractor_eject(Packing& packing, DiskId p, Rng& rng, std::size_t max_removed) {
+  detail::UndoLog log(packing);
+  return detail::attractor_eject(log, packing, p, rng, max_removed);
 }
 
 }  // namespace disktune

@@ -168,6 +168,20 @@ class Crystal {
       const std::size_t room = inject_ ? start + max_change - std::min(p_.size(), start + max_change)
                                        : max_change;
       if (!settle(batch, a, room)) continue;
+      if (!inject_) {
+        // The mobile disks around the new site: attractor ejection (3.2: disks that cover
+        // no attractor move as in attractor ejection) removes those the lattice made
+        // redundant, which pays for the voids the step refilled.
+        std::vector<DiskId> around;
+        p_.for_each_near(a, 2 * s_, [&](const Neighbor& n) {
+          if (mobile(p_, n.id)) around.push_back(n.id);
+        });
+        for (const DiskId id : around) {
+          if (p_.alive(id) && mobile(p_, id) && within(p_.size() - 1)) {
+            detail::attractor_eject(batch, p_, id, rng_, 1);
+          }
+        }
+      }
       if (!within(p_.size())) {
         batch.revert_to(step);
         continue;

@@ -26,6 +26,10 @@ bool covers_all(Vec2 c, double r, const std::vector<Corner>& corners);
 /// disks are left).
 bool void_free_near(const Packing& packing, Vec2 center, double r);
 
+/// Attractor ejection of p (see tuning.h), its edits recorded in `log` (taken back to
+/// where they started when it fails), so that a caller can take it back too.
+std::size_t attractor_eject(UndoLog& log, Packing& packing, DiskId p, Rng& rng, std::size_t max_removed);
+
 /// Restores maximality inside D(center, r) after a disk there was lifted or moved: while
 /// the region holds uncovered corners, injects a disk at one end of their diameter pair
 /// (paper, 2.1). Corners are the only place voids can hide: everything outside the
