@@ -11,21 +11,14 @@
 
 #include "disktune/errors.h"
 #include "lattices.h"
+#include "test_util.h"
 
 namespace disktune {
 namespace {
 
 namespace fs = std::filesystem;
 
-struct TempDir {
-  fs::path path =
-      fs::temp_directory_path() /
-      ("disktune_mesh_io_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-       "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
-  TempDir() { fs::create_directories(path); }
-  ~TempDir() { fs::remove_all(path); }
-  std::string file(const std::string& name) const { return (path / name).string(); }
-};
+using test::TempDir;
 
 TriangleMesh small_mesh() {
   // A shifted hex lattice: copies across the seam, coordinates with many digits.

@@ -12,20 +12,14 @@
 
 #include "disktune/errors.h"
 #include "disktune/sampling.h"
+#include "test_util.h"
 
 namespace disktune {
 namespace {
 
 namespace fs = std::filesystem;
 
-struct TempDir {
-  fs::path path =
-      fs::temp_directory_path() /
-      ("disktune_png_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "_" +
-       ::testing::UnitTest::GetInstance()->current_test_info()->name());
-  TempDir() { fs::create_directories(path); }
-  ~TempDir() { fs::remove_all(path); }
-};
+using test::TempDir;
 
 struct Decoded {
   unsigned width = 0, height = 0;

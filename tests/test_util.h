@@ -2,6 +2,11 @@
 // Glue between the library and the independent oracle: the oracle sees plain numbers.
 #pragma once
 
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
 #include "disktune/packing.h"
 #include "disktune/periodic_box.h"
 #include "oracle/oracle.h"
@@ -15,5 +20,17 @@ inline oracle::Points centers_of(const Packing& packing) {
 }
 
 inline oracle::Box box_of(const PeriodicBox& box) { return {box.width(), box.height()}; }
+
+/// A fresh folder for the running test, removed afterwards.
+struct TempDir {
+  std::filesystem::path path =
+      std::filesystem::temp_directory_path() /
+      ("disktune_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "_" +
+       ::testing::UnitTest::GetInstance()->current_test_info()->test_suite_name() + "_" +
+       ::testing::UnitTest::GetInstance()->current_test_info()->name());
+  TempDir() { std::filesystem::create_directories(path); }
+  ~TempDir() { std::filesystem::remove_all(path); }
+  std::string file(const std::string& name) const { return (path / name).string(); }
+};
 
 }  // namespace disktune::test

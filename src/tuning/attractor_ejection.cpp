@@ -43,15 +43,7 @@ std::size_t attractor_eject(UndoLog& log, Packing& packing, DiskId p, Rng& rng, 
   const std::size_t mark = log.mark();
   const double r = packing.radius(p);
   const Vec2 pc = packing.center(p);
-  std::vector<Neighbor> near;
-  packing.for_each_near(pc, 2 * r, [&](const Neighbor& n) {
-    if (n.id == p || (packing.flags(n.id) & (kFixed | kFrozen))) return;
-    for (const Neighbor& m : near) {
-      if (m.id == n.id) return;
-    }
-    near.push_back(n);
-  });
-  for (std::size_t i = near.size(); i > 1; --i) std::swap(near[i - 1], near[uniform_index(rng, i)]);
+  const std::vector<Neighbor> near = detail::mobile_neighbors(packing, pc, p, rng);
 
   std::vector<Corner> corners;
   for (const Neighbor& q : near) {

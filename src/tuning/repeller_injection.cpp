@@ -12,15 +12,7 @@ namespace disktune {
 std::size_t repel_from(Packing& packing, Vec2 point, DiskId self, Rng& rng, std::size_t max_added) {
   const double r = packing.max_radius();
   // The disks overlapping a disk at `point`, seen in its frame (one image each).
-  std::vector<Neighbor> near;
-  packing.for_each_near(point, 2 * r, [&](const Neighbor& n) {
-    if (n.id == self || (packing.flags(n.id) & (kFixed | kFrozen))) return;
-    for (const Neighbor& m : near) {
-      if (m.id == n.id) return;
-    }
-    near.push_back(n);
-  });
-  for (std::size_t i = near.size(); i > 1; --i) std::swap(near[i - 1], near[uniform_index(rng, i)]);
+  const std::vector<Neighbor> near = detail::mobile_neighbors(packing, point, self, rng);
 
   std::vector<Corner> corners;
   for (const Neighbor& q : near) {

@@ -39,11 +39,7 @@ std::size_t sift_eject(Packing& packing, DiskId p, Rng& rng, std::size_t max_rem
   if (max_removed == 0 || (packing.flags(p) & (kFixed | kFrozen))) return 0;
   const double r = packing.radius(p);
   const Vec2 pc = packing.center(p);
-  std::vector<Neighbor> near;
-  packing.for_each_near(pc, 2 * r, [&](const Neighbor& n) {
-    if (n.id != p && !(packing.flags(n.id) & (kFixed | kFrozen))) near.push_back(n);
-  });
-  for (std::size_t i = near.size(); i > 1; --i) std::swap(near[i - 1], near[uniform_index(rng, i)]);
+  const std::vector<Neighbor> near = detail::mobile_neighbors(packing, pc, p, rng);
 
   std::vector<Corner> corners;
   for (const Neighbor& q : near) {

@@ -25,6 +25,19 @@ bool covers_all(Vec2 c, double r, const std::vector<Corner>& corners) {
   return true;
 }
 
+std::vector<Neighbor> mobile_neighbors(const Packing& packing, Vec2 point, DiskId self, Rng& rng) {
+  std::vector<Neighbor> near;
+  packing.for_each_near(point, 2 * packing.max_radius(), [&](const Neighbor& n) {
+    if (n.id == self || (packing.flags(n.id) & (kFixed | kFrozen))) return;
+    for (const Neighbor& m : near) {
+      if (m.id == n.id) return;
+    }
+    near.push_back(n);
+  });
+  for (std::size_t i = near.size(); i > 1; --i) std::swap(near[i - 1], near[uniform_index(rng, i)]);
+  return near;
+}
+
 bool void_free_near(const Packing& packing, Vec2 center, double r) {
   std::vector<Corner> corners;
   return !packing.any_near(center, 2 * r * (1 + kRelTol), [&](const Neighbor& n) {

@@ -15,6 +15,10 @@ namespace disktune::detail {
 /// Indices of the two corners farthest apart (i == j when there is one corner).
 std::pair<std::size_t, std::size_t> diameter_pair(const std::vector<Corner>& corners);
 
+/// The disks that can move (not fixed, not frozen) whose centers lie within 2r of
+/// `point`, except `self`: one image each, seen from `point`, in random order.
+std::vector<Neighbor> mobile_neighbors(const Packing& packing, Vec2 point, DiskId self, Rng& rng);
+
 /// True when the disk D(c, r) contains every corner: then it covers the whole void they
 /// bound (a void lies in the convex hull of its corners), and nothing needs repair.
 bool covers_all(Vec2 c, double r, const std::vector<Corner>& corners);
