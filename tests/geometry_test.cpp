@@ -72,12 +72,5 @@ TEST(Frame, WrapLandsInHalfOpenBox) {
   EXPECT_EQ(f.wrap({2.0, 3.0}).x, 0.0);
 }
 
-TEST(Frame, NearestImage) {
-  const Frame f{{0, 0}, {1, 1}, true};
-  const Vec2 im = f.nearest_image({0.95, 0.02}, {0.03, 0.97});
-  EXPECT_NEAR(im.x, -0.05, 1e-15);
-  EXPECT_NEAR(im.y, 1.02, 1e-15);
-}
-
 }  // namespace
 }  // namespace disktune

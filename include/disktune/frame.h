@@ -22,13 +22,6 @@ struct Frame {
     return {wrap_1d(p.x, origin.x, extent.x), wrap_1d(p.y, origin.y, extent.y)};
   }
 
-  /// The image of `p` closest to `ref`, i.e. `p` seen in `ref`'s unwrapped frame.
-  Vec2 nearest_image(Vec2 p, Vec2 ref) const {
-    if (!periodic) return p;
-    const Vec2 d = p - ref;
-    return {p.x - extent.x * std::round(d.x / extent.x), p.y - extent.y * std::round(d.y / extent.y)};
-  }
-
  private:
   static double wrap_1d(double v, double lo, double len) {
     double t = v - lo;
