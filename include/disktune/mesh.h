@@ -43,6 +43,25 @@ struct TriangleMesh {
 /// Throws InvalidInput for an empty or non-periodic packing, or two coinciding centers.
 TriangleMesh periodic_delaunay(const Packing& packing);
 
+/// A triangle mesh of a bounded planar domain (no periodic copies): a constrained
+/// Delaunay mesh of a packing, or the CVT reference mesh.
+struct PlanarMesh {
+  std::vector<Vec2> vertices;
+  /// The disk each vertex is (kNoDisk for a mesh not made from a packing).
+  std::vector<DiskId> vertex_disk;
+  /// Counterclockwise vertex triples.
+  std::vector<std::array<std::uint32_t, 3>> triangles;
+};
+
+/// The constrained Delaunay triangulation (CGAL) of the live disk centers of a packing
+/// in a bounded domain whose boundary is given as closed loops of disks: `loops[k]`
+/// lists the disks on boundary loop k in order along it (loop 0 the outer boundary,
+/// the others holes; each consecutive pair, and last to first, is a constrained edge).
+/// Only triangles inside the outer loop and outside the holes are kept. Vertices are
+/// the live disks in increasing id order. Throws InvalidInput for a loop with fewer
+/// than 3 disks, a dead id, or constraints that cross.
+PlanarMesh constrained_delaunay(const Packing& packing, const std::vector<std::vector<DiskId>>& loops);
+
 /// Each edge of the torus triangulation once, as a pair of vertex indices (a, b) with
 /// the segment vertices[a]..vertices[b] at its laid-out position in one triangle.
 std::vector<std::array<std::uint32_t, 2>> unique_edges(const TriangleMesh& mesh);

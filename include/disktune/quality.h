@@ -4,7 +4,9 @@
 // docs/quality.md.
 #pragma once
 
+#include <array>
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "disktune/mesh.h"
@@ -63,6 +65,24 @@ struct QualityReport {
     double cell_area_cv = 0;  // standard deviation / mean of the cell areas
   } voronoi;
 };
+
+/// Angle statistics (degrees) of any set of triangles: a torus mesh, a planar mesh, or
+/// part of one. Throws InvalidInput when `triangles` is empty.
+QualityReport::Angles measure_angles(const std::vector<Vec2>& vertices,
+                                     const std::vector<std::array<std::uint32_t, 3>>& triangles);
+
+/// The shape measures of a planar mesh with a boundary (a domain's constrained
+/// Delaunay mesh, the CVT reference): angles and edges of all triangles, and local
+/// beta of the vertices off the boundary, whose Voronoi cell the triangles around them
+/// define (a boundary vertex's cell is cut by the boundary).
+struct PlanarMeshQuality {
+  std::size_t vertex_count = 0, triangle_count = 0, interior_vertex_count = 0;
+  QualityReport::Angles angles;
+  QualityReport::Edges edges;           // lengths over r
+  QualityReport::LocalBeta local_beta;  // interior vertices only
+};
+/// Lengths are measured in units of r. Throws InvalidInput for a mesh without triangles.
+PlanarMeshQuality measure_planar_mesh(const PlanarMesh& mesh, double r);
 
 /// Measures `packing`, whose disks all have radius `r`, and its periodic Delaunay mesh
 /// (from periodic_delaunay(packing)); distances are relative to r. Throws InvalidInput

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <sstream>
 
 #include "disktune/density.h"
@@ -59,6 +60,29 @@ Statistics statistics(const std::vector<double>& values) {
   return s;
 }
 
+QualityReport::Edges edge_statistics(const std::vector<double>& lengths_over_r) {
+  QualityReport::Edges E;
+  E.histogram = make_histogram(0, 0.01, 300);
+  E.min_over_r = lengths_over_r.empty() ? 0 : kInf;
+  for (const double l : lengths_over_r) {
+    E.min_over_r = std::min(E.min_over_r, l);
+    E.max_over_r = std::max(E.max_over_r, l);
+    add(E.histogram, l);
+  }
+  return E;
+}
+
+QualityReport::LocalBeta beta_statistics(const std::vector<double>& betas) {
+  QualityReport::LocalBeta B;
+  B.histogram = make_histogram(0, 0.01, 200);
+  for (const double b : betas) add(B.histogram, b);
+  const Statistics st = statistics(betas);
+  B.min = st.min;
+  B.mean = st.mean;
+  B.max = st.max;
+  return B;
+}
+
 void check_mesh_of(const Packing& packing, const TriangleMesh& mesh) {
   if (packing.empty()) throw InvalidInput("cannot measure an empty packing: it has no disks");
   bool ok = mesh.disk_count == packing.size() && mesh.vertex_disk.size() == mesh.vertices.size() &&
@@ -99,6 +123,71 @@ bool is_conflict_free(const Packing& packing, double r) {
 
 }  // namespace
 
+QualityReport::Angles measure_angles(const std::vector<Vec2>& vertices,
+                                     const std::vector<std::array<std::uint32_t, 3>>& triangles) {
+  if (triangles.empty()) throw InvalidInput("measure_angles: the mesh has no triangles");
+  QualityReport::Angles A;
+  A.histogram = make_histogram(0, 1, 180);
+  A.min = kInf;
+  std::size_t in_50_70 = 0, obtuse = 0;
+  double abs_dev_sum = 0;
+  for (const auto& t : triangles) {
+    const Vec2 p[3] = {vertices[t[0]], vertices[t[1]], vertices[t[2]]};
+    double largest = 0;
+    for (int k = 0; k < 3; ++k) {
+      const double deg = angle_at(p[k], p[(k + 1) % 3], p[(k + 2) % 3]);
+      add(A.histogram, deg);
+      A.min = std::min(A.min, deg);
+      A.max = std::max(A.max, deg);
+      largest = std::max(largest, deg);
+      abs_dev_sum += std::abs(deg - 60);
+      if (deg >= 50 - kAngleTolDeg && deg <= 70 + kAngleTolDeg) ++in_50_70;
+    }
+    if (largest > 90 + kAngleTolDeg) ++obtuse;
+  }
+  const double angle_count = 3.0 * static_cast<double>(triangles.size());
+  A.mean_abs_dev_60 = abs_dev_sum / angle_count;
+  A.fraction_50_70 = static_cast<double>(in_50_70) / angle_count;
+  A.fraction_obtuse_triangles = static_cast<double>(obtuse) / static_cast<double>(triangles.size());
+  return A;
+}
+
+PlanarMeshQuality measure_planar_mesh(const PlanarMesh& mesh, double r) {
+  PlanarMeshQuality q;
+  q.vertex_count = mesh.vertices.size();
+  q.triangle_count = mesh.triangles.size();
+  q.angles = measure_angles(mesh.vertices, mesh.triangles);
+  // Each edge with the number of triangles on it: one triangle means a boundary edge.
+  std::map<std::pair<std::uint32_t, std::uint32_t>, int> edge_uses;
+  std::vector<double> outradius(mesh.vertices.size(), 0), nearest(mesh.vertices.size(), kInf);
+  for (const auto& t : mesh.triangles) {
+    const Vec2 p[3] = {mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]};
+    const double rho = distance(circumcenter(p[0], p[1], p[2]), p[0]);
+    for (int k = 0; k < 3; ++k) {
+      outradius[t[k]] = std::max(outradius[t[k]], rho);
+      ++edge_uses[std::minmax(t[k], t[(k + 1) % 3])];
+    }
+  }
+  std::vector<bool> on_boundary(mesh.vertices.size(), false);
+  std::vector<double> lengths_over_r;
+  for (const auto& [e, uses] : edge_uses) {
+    const double len = distance(mesh.vertices[e.first], mesh.vertices[e.second]);
+    lengths_over_r.push_back(len / r);
+    for (const std::uint32_t v : {e.first, e.second}) {
+      nearest[v] = std::min(nearest[v], len);
+      if (uses == 1) on_boundary[v] = true;
+    }
+  }
+  q.edges = edge_statistics(lengths_over_r);
+  std::vector<double> betas;
+  for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
+    if (!on_boundary[v] && outradius[v] > 0) betas.push_back(outradius[v] / nearest[v]);
+  }
+  q.interior_vertex_count = betas.size();
+  q.local_beta = beta_statistics(betas);
+  return q;
+}
+
 QualityReport measure_quality(const Packing& packing, const TriangleMesh& mesh, double r) {
   check_mesh_of(packing, mesh);
   check_uniform_radius(packing, r);
@@ -120,26 +209,10 @@ QualityReport measure_quality(const Packing& packing, const TriangleMesh& mesh, 
   const std::size_t ids = packing.id_bound();
   std::vector<double> outradius(ids, 0), nearest(ids, kInf), cell_area(ids, 0);
 
-  auto& A = q.angles;
-  A.histogram = make_histogram(0, 1, 180);
-  A.min = kInf;
-  A.max = 0;
-  std::size_t in_50_70 = 0, obtuse = 0;
-  double abs_dev_sum = 0, max_circumradius = 0;
+  q.angles = measure_angles(mesh.vertices, mesh.triangles);
+  double max_circumradius = 0;
   for (const auto& t : mesh.triangles) {
     const Vec2 p[3] = {mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]};
-    double largest = 0;
-    for (int k = 0; k < 3; ++k) {
-      const double deg = angle_at(p[k], p[(k + 1) % 3], p[(k + 2) % 3]);
-      add(A.histogram, deg);
-      A.min = std::min(A.min, deg);
-      A.max = std::max(A.max, deg);
-      largest = std::max(largest, deg);
-      abs_dev_sum += std::abs(deg - 60);
-      if (deg >= 50 - kAngleTolDeg && deg <= 70 + kAngleTolDeg) ++in_50_70;
-    }
-    if (largest > 90 + kAngleTolDeg) ++obtuse;
-
     // The circumcenter is the Voronoi vertex the three cells share; it is at the
     // circumradius from each corner. Each corner's share of the triangle is its
     // quadrilateral (corner, edge midpoint, circumcenter, edge midpoint), signed, so
@@ -154,45 +227,30 @@ QualityReport measure_quality(const Packing& packing, const TriangleMesh& mesh, 
       cell_area[d] += 0.5 * (cross(next - a, o - a) + cross(o - a, prev - a));
     }
   }
-  const double angle_count = 3.0 * static_cast<double>(mesh.triangles.size());
-  A.mean_abs_dev_60 = abs_dev_sum / angle_count;
-  A.fraction_50_70 = static_cast<double>(in_50_70) / angle_count;
-  A.fraction_obtuse_triangles =
-      static_cast<double>(obtuse) / static_cast<double>(mesh.triangles.size());
   q.max_coverage_over_r = max_circumradius / r;
 
-  auto& E = q.edges;
-  E.histogram = make_histogram(0, 0.01, 300);
-  E.min_over_r = kInf;
-  E.max_over_r = 0;
   const auto edges = unique_edges(mesh);
   q.edge_count = edges.size();
+  std::vector<double> lengths_over_r;
   for (const auto& e : edges) {
     const double len = distance(mesh.vertices[e[0]], mesh.vertices[e[1]]);
-    E.min_over_r = std::min(E.min_over_r, len / r);
-    E.max_over_r = std::max(E.max_over_r, len / r);
-    add(E.histogram, len / r);
+    lengths_over_r.push_back(len / r);
     for (const std::uint32_t v : e) {
       nearest[mesh.vertex_disk[v]] = std::min(nearest[mesh.vertex_disk[v]], len);
     }
   }
+  q.edges = edge_statistics(lengths_over_r);
   // The nearest other center of any disk is a Delaunay neighbour.
-  q.min_distance_over_r = E.min_over_r;
+  q.min_distance_over_r = q.edges.min_over_r;
 
-  auto& B = q.local_beta;
-  B.histogram = make_histogram(0, 0.01, 200);
   std::vector<double> betas, aspects, areas;
   for (const DiskId id : packing.ids()) {
     const double beta = outradius[id] / nearest[id];
     betas.push_back(beta);
     aspects.push_back(2 * beta);  // the cell's inradius about its site is nearest / 2
     areas.push_back(cell_area[id]);
-    add(B.histogram, beta);
   }
-  const Statistics beta_stats = statistics(betas);
-  B.min = beta_stats.min;
-  B.mean = beta_stats.mean;
-  B.max = beta_stats.max;
+  q.local_beta = beta_statistics(betas);
   q.voronoi.aspect_ratio = statistics(aspects);
   q.voronoi.cell_area = statistics(areas);
   q.voronoi.cell_area_cv = q.voronoi.cell_area.stddev / q.voronoi.cell_area.mean;
