@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <random>
@@ -149,6 +150,29 @@ TEST(OracleHex, RemovingOnePointBreaksMaximality) {
   ASSERT_FALSE(rep.uncovered.empty());
   for (const auto& u : rep.uncovered)
     EXPECT_LT(torus_dist(L.box, {u.x, u.y}, gone), L.s) << u.why;
+}
+
+// The densest lattice (r = spacing) without the three disks at the edge midpoints of a
+// triangle of side 2r: a hole of circumradius 2r/sqrt3 whose corners are the tangent
+// points of the triangle's corner disks, each also on two circles outside. Every corner
+// lies on a third circle, so only the probes beside corners (step 2b) see the hole.
+TEST(OracleHex, AHoleWhoseCornersAllLieOnThirdCirclesIsFound) {
+  Lattice L = hex(10, 12);
+  const double r = L.s;
+  const double P[2] = {L.pts[25][0], L.pts[25][1]};  // row 2, col 5
+  const double e1[2] = {1, 0}, e2[2] = {0.5, kSqrt3 / 2};
+  for (const auto& m : {std::array<double, 2>{e1[0], e1[1]}, std::array<double, 2>{e2[0], e2[1]},
+                        std::array<double, 2>{e1[0] + e2[0], e1[1] + e2[1]}}) {
+    const double x = P[0] + L.s * m[0], y = P[1] + L.s * m[1];
+    const auto it = std::min_element(L.pts.begin(), L.pts.end(), [&](const auto& a, const auto& b) {
+      return std::hypot(a[0] - x, a[1] - y) < std::hypot(b[0] - x, b[1] - y);
+    });
+    ASSERT_LT(std::hypot((*it)[0] - x, (*it)[1] - y), 1e-9);
+    L.pts.erase(it);
+  }
+  const Report rep = oracle::check_all(L.box, r, L.pts, 1e-6, /*probes=*/0);
+  EXPECT_TRUE(rep.conflict_free()) << rep.summary();
+  EXPECT_FALSE(rep.maximal()) << rep.summary();
 }
 
 TEST(OracleHex, MovingOnePointTowardANeighbourIsAConflict) {

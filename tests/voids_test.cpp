@@ -5,6 +5,7 @@
 
 #include "disktune/sampling.h"
 #include "disktune/voids.h"
+#include "lattices.h"
 #include "test_util.h"
 
 namespace disktune {
@@ -104,6 +105,31 @@ TEST(Corners, ATripleCornerIsAVoidCornerUnlessItsCirclesSurroundIt) {
   EXPECT_GT(corners_at_c({10, 95, 185}), 0u);   // a gap of 185 degrees: still a wedge
   EXPECT_EQ(corners_at_c({0, 120, 240}), 0u);   // surrounded: covered
   EXPECT_EQ(corners_at_c({0, 90, 175, 270}), 0u);
+}
+
+TEST(Corners, TangentCirclesWithTheirOtherCirclesOnOneSideLeaveAVoid) {
+  // The densest lattice (r = spacing) without the three disks at the edge midpoints of
+  // a triangle of side 2r: each midpoint is the tangent point of two corner disks and
+  // lies on two circles outside the triangle, so the directions to its circles fill a
+  // closed half-plane exactly, and the hole inside (circumradius 2r/sqrt3) borders it.
+  const double a = 0.1;
+  Packing p = test::hex_lattice(10, 12, a, a);
+  const Vec2 P = p.center(25), e1{1, 0}, e2{0.5, std::sqrt(3.0) / 2};
+  for (const Vec2 m : {e1, e2, e1 + e2}) {
+    DiskId gone = kNoDisk;
+    p.for_each_near(P + m * a, 1e-9, [&](const Neighbor& n) { gone = n.id; });
+    ASSERT_NE(gone, kNoDisk);
+    p.remove(gone);
+  }
+  EXPECT_FALSE(is_maximal(p));
+  std::vector<Corner> corners;
+  corners_in_region(p, P + (e1 + e2) * (2 * a / 3), a, {}, corners);
+  ASSERT_FALSE(corners.empty());
+  for (const Corner& c : corners) {  // each a tangent point (on four circles, once per pair)
+    double nearest = 1;
+    for (const Vec2 m : {e1, e2, e1 + e2}) nearest = std::min(nearest, distance(c.point, P + m * a));
+    EXPECT_LT(nearest, 1e-6 * a);
+  }
 }
 
 TEST(Corners, OnCircleFindsIsolatedDisksAndTheirCorners) {

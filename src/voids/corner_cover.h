@@ -3,7 +3,7 @@
 // by the other disks (internal). A disk that holds x strictly inside covers it. Disks
 // whose circles pass through x too, within the tolerance, cover it only together with
 // A and B, when they surround x: when the directions from x to their centers are not
-// all in one open half-plane. Such cocircular corners are normal (hexagonal states,
+// all in one closed half-plane. Such cocircular corners are normal (hexagonal states,
 // disks placed at corners), and a corner that merely lies on a third circle can still
 // open a wedge of void. Feed the other disks one by one with add().
 #pragma once
@@ -34,8 +34,11 @@ class CornerCover {
   bool covered() const { return strictly_ || (n_ > 2 && !leaves_a_wedge()); }
 
  private:
-  // True when the directions to the centers through x lie in an open half-plane: a
-  // gap between sorted angles above pi (by more than rounding) is the uncovered wedge.
+  // True when the directions to the centers through x lie in a closed half-plane: a
+  // gap between sorted angles of pi or more (up to rounding) is an uncovered wedge.
+  // Exactly pi matters: two circles tangent at x with their other circles through x on
+  // one side leave a void on the other (a hexagonal crystal missing the three disks in
+  // a triangle of side 2r has a hole there, of circumradius 2r/sqrt3).
   bool leaves_a_wedge() const {
     constexpr double kPi = 3.14159265358979323846;
     double angle[kMax];
@@ -43,7 +46,7 @@ class CornerCover {
     std::sort(angle, angle + n_);
     double gap = angle[0] + 2 * kPi - angle[n_ - 1];
     for (int k = 1; k < n_; ++k) gap = std::max(gap, angle[k] - angle[k - 1]);
-    return gap > kPi + 1e-9;
+    return gap > kPi - 1e-9;
   }
 
   static constexpr int kMax = 16;

@@ -21,7 +21,8 @@
 // So "N > 0, no isolated circle, every corner within a third disk" is equivalent to
 // "covered", except when a void corner lies exactly on a third circle (within tol):
 // a measure-zero coincidence that would have to happen at every corner of a void.
-// The random probes (step 4) are an independent backstop for that and for bugs here.
+// Step 2b probes beside every corner for exactly that case; the random probes (step
+// 4) are an independent backstop for it and for bugs here.
 //
 // Tolerance: a point is covered when a center is within r*(1+tol), so voids whose
 // corners are all within about r*tol of a third disk are accepted. Centers within
@@ -189,6 +190,9 @@ void add_uncovered(Report& rep, const Box& box, double x, double y, Why why) {
   ++rep.uncovered_count;
 }
 
+// How far (in units of r) step 2b probes beside each corner.
+constexpr double kCornerProbe = 0.01;
+
 Report run(const Box& box, double r, const Points& centers, double tol, bool conflicts,
            bool maximality, std::size_t probes, std::uint64_t seed, Method method) {
   const double W = box.width, H = box.height;
@@ -257,13 +261,35 @@ Report run(const Box& box, double r, const Points& centers, double tol, bool con
       const double half = std::acos(std::min(1.0, d / (2 * r)));
       for (double ang : {base - half, base + half}) {
         const double px = xi + r * std::cos(ang), py = yi + r * std::sin(ang);
-        if (!covered_by_other(px, py, xi, yi, im.x, im.y))
+        if (!covered_by_other(px, py, xi, yi, im.x, im.y)) {
           add_uncovered(rep, box, px, py, [&] {
             std::ostringstream why;
             why << "corner of disks " << i << " and " << im.j << " (image offset " << im.a
                 << "," << im.b << ") is not covered by a third disk";
             return why.str();
           });
+          if (half == 0) break;
+          continue;
+        }
+        // Step 2b: beside a covered corner, a probe a little way into the region
+        // outside both circles, along the bisector pointing away from both centers
+        // (both normals of tangent circles). Sound like any probe, and it sees the void
+        // that a corner lying exactly on a third circle hides (the degenerate case
+        // above), e.g. the cusp beside two tangent circles.
+        const double ux = 2 * px - xi - im.x, uy = 2 * py - yi - im.y, ul = std::hypot(ux, uy);
+        const double nx = (im.y - yi) / d, ny = -(im.x - xi) / d;
+        for (const double sign : {1.0, -1.0}) {
+          const double wx = ul > 1e-9 * r ? ux / ul : sign * nx, wy = ul > 1e-9 * r ? uy / ul : sign * ny;
+          const double qx = px + kCornerProbe * r * wx, qy = py + kCornerProbe * r * wy;
+          if (!images.visit(qx, qy, reach, [](const Image&) { return true; }))
+            add_uncovered(rep, box, qx, qy, [&] {
+              std::ostringstream why;
+              why << "probe beside the corner of disks " << i << " and " << im.j
+                  << " is covered by no disk";
+              return why.str();
+            });
+          if (ul > 1e-9 * r) break;
+        }
         if (half == 0) break;
       }
       return false;
