@@ -4,12 +4,14 @@
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <ostream>
 #include <string>
 #include <vector>
 
 #include "disktune/packing.h"
 #include "disktune/periodic_box.h"
+#include "disktune/planar_domain.h"
 
 namespace disktune {
 
@@ -34,6 +36,11 @@ std::vector<PointRecord> read_points_csv(const std::string& path);
 /// differs from r; IoError when the file cannot be read. It does not check conflicts
 /// or maximality (see validate_packing in voids.h).
 Packing read_packing_csv(const std::string& path, const PeriodicBox& box, double r);
+
+/// The same for a planar domain: the packing is restricted to it (Packing::set_domain);
+/// a center outside the domain is refused. Boundary disks are not yet marked: see
+/// boundary_loops in boundary.h.
+Packing read_packing_csv(const std::string& path, std::shared_ptr<const PlanarDomain> domain, double r);
 
 struct SvgStyle {
   double pixels = 800;  ///< width of the picture in pixels

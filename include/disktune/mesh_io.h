@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Writing a TriangleMesh: OFF, OBJ or legacy-ASCII VTK (ParaView opens it), chosen by
+// Writing a TriangleMesh or PlanarMesh: OFF, OBJ or legacy-ASCII VTK (ParaView opens it), chosen by
 // the file's extension, and an SVG picture of the mesh over its packing. Every writer
 // goes through write_file_atomically: a failure leaves no partial file.
 #pragma once
@@ -21,6 +21,8 @@ MeshFormat mesh_format_for_path(const std::string& path);
 /// extension. The VTK file also carries each vertex's disk id (point data `disk_id`),
 /// which tells the copies across the seam from the disks themselves.
 void write_mesh(const std::string& path, const TriangleMesh& mesh);
+/// The same for a planar mesh; its VTK `disk_id` is kNoDisk for a vertex that is no disk.
+void write_mesh(const std::string& path, const PlanarMesh& mesh);
 
 struct MeshSvgStyle {
   double pixels = 800;  ///< width of the picture in pixels
@@ -28,6 +30,10 @@ struct MeshSvgStyle {
 /// The packing's disks at half their radius (as write_packing_svg draws them) with the
 /// mesh's edges over them, every periodic image that reaches into the box.
 void write_mesh_svg(const std::string& path, const TriangleMesh& mesh, const Packing& packing,
+                    const MeshSvgStyle& style = {});
+/// The same for a planar mesh over its packing; fixed disks (boundary samples) stand out
+/// in their own color, in either picture.
+void write_mesh_svg(const std::string& path, const PlanarMesh& mesh, const Packing& packing,
                     const MeshSvgStyle& style = {});
 
 }  // namespace disktune

@@ -7,11 +7,13 @@
 
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <utility>
 #include <vector>
 
 #include "disktune/frame.h"
 #include "disktune/geometry.h"
+#include "disktune/planar_domain.h"
 #include "disktune/spatial_grid.h"
 #include "disktune/tolerance.h"
 
@@ -62,9 +64,17 @@ class Packing {
     return grid_.any_near(q, R, std::forward<Pred>(pred));
   }
 
-  /// True when a new center at `q` would lie strictly inside an existing disk (other
-  /// than `ignore`): the prior-disk conflict rule, which for a uniform radius is
-  /// "closer than r to another center".
+  /// Restricts the packing to a planar domain inside its frame: void corners outside
+  /// the domain are no voids (voids.h), and a center outside it is a conflict. Copies
+  /// of the packing share the domain.
+  void set_domain(std::shared_ptr<const PlanarDomain> domain) { domain_ = std::move(domain); }
+  const PlanarDomain* domain() const { return domain_.get(); }
+  /// True when q lies in the domain (always, without one).
+  bool inside(Vec2 q) const { return !domain_ || domain_->contains(q); }
+
+  /// True when a new center at `q` would lie outside the domain or strictly inside an
+  /// existing disk (other than `ignore`): the prior-disk conflict rule, which for a
+  /// uniform radius is "closer than r to another center".
   bool conflicts(Vec2 q, DiskId ignore = kNoDisk) const;
   /// True when `q` lies in some disk other than `ignore` (closed disks, tolerance).
   bool covered(Vec2 q, DiskId ignore = kNoDisk) const;
@@ -77,6 +87,7 @@ class Packing {
   std::vector<std::uint8_t> flags_;
   std::vector<DiskId> free_ids_;
   std::size_t live_ = 0;
+  std::shared_ptr<const PlanarDomain> domain_;
 };
 
 }  // namespace disktune

@@ -18,4 +18,10 @@ std::string quality_json(const QualityReport& report, const Spectrum* spectrum =
 void write_quality_json(const std::string& path, const QualityReport& report,
                         const Spectrum* spectrum = nullptr);
 
+/// The planar-domain report: the density and checks, and `mesh`, `interior_triangles`
+/// and `boundary_triangles`, each {vertex_count, triangle_count, interior_vertex_count,
+/// angles, edges, local_beta} with the keys of the torus report.
+std::string quality_json(const PlanarQualityReport& report);
+void write_quality_json(const std::string& path, const PlanarQualityReport& report);
+
 }  // namespace disktune

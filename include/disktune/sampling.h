@@ -3,9 +3,11 @@
 #pragma once
 
 #include <cstddef>
+#include <memory>
 
 #include "disktune/packing.h"
 #include "disktune/periodic_box.h"
+#include "disktune/planar_domain.h"
 #include "disktune/random.h"
 
 namespace disktune {
@@ -35,5 +37,14 @@ struct MpsStats {
 /// gives the same sample. Throws InvalidInput for a bad radius.
 Packing sample_mps(const PeriodicBox& box, double r, Rng& rng, const MpsOptions& options = {},
                    MpsStats* stats = nullptr);
+
+/// A maximal Poisson-disk sample of a planar domain with uniform radius r (paper,
+/// section 7): 1D MPS of the boundary first (sample_boundary: fixed disks on every
+/// corner and along the segments), then darts uniform over the domain on a background
+/// grid whose covered cells are dropped after each round, then exact void filling: each
+/// uncovered void corner in the domain gets a disk at a random point of the void near
+/// it (the corner itself when darts miss). The packing is restricted to the domain
+/// (Packing::set_domain). Throws InvalidInput for a bad radius.
+Packing sample_mps(std::shared_ptr<const PlanarDomain> domain, double r, Rng& rng);
 
 }  // namespace disktune

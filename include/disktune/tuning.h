@@ -10,6 +10,7 @@
 
 #include "disktune/packing.h"
 #include "disktune/periodic_box.h"
+#include "disktune/planar_domain.h"
 #include "disktune/random.h"
 
 namespace disktune {
@@ -97,6 +98,13 @@ struct TuneResult {
 /// any more (then `reached` is false and the packing is the closest it got). Every
 /// intermediate state between operations is conflict-free and maximal.
 TuneResult tune(Packing& packing, const PeriodicBox& box, const Target& target, Rng& rng,
+                const TuneOptions& options = {});
+
+/// The same in a planar domain: `packing` restricted to it (Packing::set_domain), its
+/// boundary disks fixed. The boundary disks are tuned first toward the spacing of a
+/// hexagonal packing of the target count (tune_boundary), then the interior as above.
+/// Angle injection needs the periodic box.
+TuneResult tune(Packing& packing, const PlanarDomain& domain, const Target& target, Rng& rng,
                 const TuneOptions& options = {});
 
 // The single operations. Each returns the number of disks it added (0 when it only

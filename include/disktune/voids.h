@@ -5,6 +5,7 @@
 // isolated, so corners are both how voids are found and how maximality is certified.
 #pragma once
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -33,8 +34,16 @@ void corners_on_circle(const Packing& packing, DiskId p, std::vector<Corner>& ou
 void corners_in_region(const Packing& packing, Vec2 center, double R,
                        const std::vector<DiskId>& ignore, std::vector<Corner>& out);
 
-/// True when no corner of the whole packing is uncovered and no circle is isolated:
-/// the packing is maximal (up to the tolerance). Linear time.
+/// The parts of segment [a, b] no disk covers, as sorted disjoint parameter intervals
+/// [t0, t1] of a + t (b - a), t in [0, 1]: the 1D voids of a boundary segment. With
+/// `fixed_only`, only fixed disks count (the boundary disks, which alone must cover the
+/// boundary). Expected time O(length / r + disks found).
+std::vector<std::array<double, 2>> uncovered_on_segment(const Packing& packing, Vec2 a, Vec2 b,
+                                                        bool fixed_only);
+
+/// True when no corner of the whole packing is uncovered and no circle is isolated,
+/// and, in a planar domain, no boundary point is uncovered: the packing is maximal (up
+/// to the tolerance). Linear time.
 bool is_maximal(const Packing& packing);
 
 /// Throws InvalidInput unless the packing is non-empty, conflict-free and maximal,

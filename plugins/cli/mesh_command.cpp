@@ -1,10 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// `disktune mesh`: the periodic Delaunay triangulation of a packing, as OFF, OBJ or VTK.
+// `disktune mesh`: the Delaunay mesh of a packing (periodic, or constrained by a planar
+// domain's boundary), as OFF, OBJ or VTK.
 #include <chrono>
 #include <cstdio>
 #include <memory>
 
+#include "command_domain.h"
 #include "commands.h"
+#include "disktune/boundary.h"
 #include "disktune/errors.h"
 #include "disktune/io.h"
 #include "disktune/mesh.h"
@@ -22,9 +25,17 @@ struct MeshArgs {
 int run_mesh(const MeshArgs& args) {
   mesh_format_for_path(args.output);  // a bad extension fails before any work
   check_output_folder(args.output);
-  const PeriodicBox box(args.domain.width, args.domain.height);
-  const Packing packing = read_packing_csv(args.input, box, args.domain.radius);
+  const CommandDomain domain = open_domain(args.domain);
+  Packing packing = domain.read(args.input, args.domain.radius, false);
   const auto t0 = std::chrono::steady_clock::now();
+  if (domain.planar) {
+    const PlanarMesh mesh = constrained_delaunay(packing, boundary_loops(packing, *domain.planar));
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    write_mesh(args.output, mesh);
+    std::printf("mesh: %zu disks, %zu triangles (constrained Delaunay, holes removed), %.3f s -> %s\n",
+                mesh.vertices.size(), mesh.triangles.size(), seconds, args.output.c_str());
+    return kExitOk;
+  }
   const TriangleMesh mesh = periodic_delaunay(packing);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -43,9 +54,10 @@ void add_mesh_command(CLI::App& app, Action& action) {
   auto args = std::make_shared<MeshArgs>();
   CLI::App* cmd = app.add_subcommand(
       "mesh",
-      "Write the periodic Delaunay triangulation of a packing (CSV x,y,r) as OFF, OBJ or VTK. "
-      "Each torus triangle appears once, laid out with its centroid in the box; vertices past "
-      "the first N are periodic copies of disks, across the seam.");
+      "Write the Delaunay mesh of a packing (CSV x,y,r) as OFF, OBJ or VTK. In the periodic "
+      "box: each torus triangle once, laid out with its centroid in the box; vertices past "
+      "the first N are periodic copies of disks, across the seam. In a planar domain: the "
+      "constrained Delaunay triangulation, boundary segments as edges, holes removed.");
   cmd->add_option("points", args->input, "CSV file of the packing (header x,y,r)")->required();
   add_domain_options(cmd, args->domain);
   cmd->add_option("--output,-o", args->output,

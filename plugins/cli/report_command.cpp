@@ -7,7 +7,9 @@
 #include <memory>
 #include <optional>
 
+#include "command_domain.h"
 #include "commands.h"
+#include "disktune/boundary.h"
 #include "disktune/errors.h"
 #include "disktune/io.h"
 #include "disktune/mesh.h"
@@ -28,12 +30,39 @@ struct ReportArgs {
   int spectrum_window = 0;  // 0: automatic
 };
 
+// A planar domain: the constrained Delaunay mesh, its triangles measured all together,
+// inside and along the boundary (no spectrum: it needs the periodic box).
+int run_planar_report(const ReportArgs& args, const CommandDomain& domain) {
+  if (!args.png_dir.empty()) {
+    throw InvalidInput("--png-dir: the PNG pictures (spectrum, histograms) are made for the "
+                       "periodic box only; use --json and --svg for a planar domain");
+  }
+  const double r = args.domain.radius;
+  Packing packing = domain.read(args.input, r, false);
+  const PlanarMesh mesh = constrained_delaunay(packing, boundary_loops(packing, *domain.planar));
+  const PlanarQualityReport q = measure_planar_quality(packing, mesh, r, domain.area());
+  if (!args.json.empty()) write_quality_json(args.json, q);
+  if (!args.svg.empty()) write_mesh_svg(args.svg, mesh, packing);
+  std::printf(
+      "report: %zu disks (%zu on the boundary), eta = %.4f, rho = %.4f, %s, %s, distance >= "
+      "%.4f r; angles %.2f..%.2f deg (mean |a-60| %.2f, %.1f %% in [50,70]; interior "
+      "triangles %.2f..%.2f, boundary triangles %.2f..%.2f), beta <= %.4f%s%s\n",
+      q.count, q.boundary_count, q.area_fraction, q.relative_radius,
+      q.maximal ? "maximal" : "NOT maximal", q.conflict_free ? "conflict-free" : "CONFLICTS",
+      q.min_distance_over_r, q.all.angles.min, q.all.angles.max, q.all.angles.mean_abs_dev_60,
+      100 * q.all.angles.fraction_50_70, q.interior.angles.min, q.interior.angles.max,
+      q.boundary.angles.min, q.boundary.angles.max, q.all.local_beta.max,
+      args.json.empty() ? "" : " -> ", args.json.c_str());
+  return kExitOk;
+}
+
 int run_report(const ReportArgs& args) {
   check_output_folder(args.json);
   check_output_folder(args.svg);
   if (!args.png_dir.empty()) check_picture_folder(args.png_dir);
-  const PeriodicBox box(args.domain.width, args.domain.height);
-  const Packing packing = read_packing_csv(args.input, box, args.domain.radius);
+  const CommandDomain domain = open_domain(args.domain);
+  if (domain.planar) return run_planar_report(args, domain);
+  const Packing packing = domain.read(args.input, args.domain.radius, false);
   std::optional<Spectrum> spectrum;
   if (!args.no_spectrum) {
     const auto start = std::chrono::steady_clock::now();

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <memory>
 
+#include "command_domain.h"
 #include "commands.h"
 #include "disktune/density.h"
 #include "disktune/errors.h"
@@ -15,20 +16,19 @@ namespace disktune::cli {
 int run_sample(const SampleJob& job) {
   check_output_folder(job.output);
   check_output_folder(job.svg);
-  const PeriodicBox box(job.domain.width, job.domain.height);
+  const CommandDomain domain = open_domain(job.domain);
   const double r = job.domain.radius;
-  box.validate_radius(r);
+  domain.validate_radius(r);
   Rng rng(job.seed);
   const auto t0 = std::chrono::steady_clock::now();
-  const Packing packing = sample_mps(box, r, rng);
+  const Packing packing = domain.sample(r, rng);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (!job.output.empty()) write_points_csv(job.output, packing);
   if (!job.svg.empty()) write_packing_svg(job.svg, packing);
-  std::printf("sample: %zu disks, eta = %.4f, rho = %.4f, %.3f s (r = %g, %g x %g periodic box)%s%s\n",
-              packing.size(), area_fraction(packing.size(), r, box.area()),
-              relative_radius(packing.size(), r, box.area()), seconds, r,
-              box.width(), box.height(), job.output.empty() ? "" : " -> ",
-              job.output.c_str());
+  std::printf("sample: %zu disks, eta = %.4f, rho = %.4f, %.3f s (r = %g, %s)%s%s\n",
+              packing.size(), area_fraction(packing.size(), r, domain.area()),
+              relative_radius(packing.size(), r, domain.area()), seconds, r,
+              domain.describe().c_str(), job.output.empty() ? "" : " -> ", job.output.c_str());
   return kExitOk;
 }
 
@@ -41,8 +41,10 @@ void check_output_folder(const std::string& path) {
 }
 
 void add_domain_options(CLI::App* cmd, DomainArgs& domain) {
-  cmd->add_option("--domain", domain.kind, "Domain kind; only 'periodic' (a periodic box) for now")
-      ->check(CLI::IsMember({"periodic"}))
+  cmd->add_option("--domain", domain.kind,
+                  "'periodic' (a W x H periodic box), or a planar domain file: .poly (Triangle's "
+                  "format: outer boundary and holes), .off or .obj (a planar triangle mesh, whose "
+                  "boundary loops bound the domain); every polygon vertex gets a fixed disk")
       ->capture_default_str();
   cmd->add_option("--width", domain.width, "Width W of the periodic box")->capture_default_str();
   cmd->add_option("--height", domain.height, "Height H of the periodic box")->capture_default_str();

@@ -61,8 +61,8 @@ std::string table(const SweepArgs& args, std::size_t mps_count, const std::vecto
      << " iterations) in the unit square (not periodic) with about the same vertex count. "
      << "Angles in degrees; beta of CVT vertices off the boundary; edges over r.\n\n";
   md << "| eta | disks | time s | min angle | max angle | mean abs(a-60) | in [50,70] | obtuse "
-        "triangles | beta mean | beta max | edge min/r | edge max/r | spectrum peak |\n"
-     << "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+        "triangles | beta mean | beta max | edge min/r | edge max/r | coverage/r | spectrum peak |\n"
+     << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const Row& w : rows) {
     md << "| " << w.label << (w.reached ? "" : " (not reached)") << " | " << w.count << " | "
        << fixed(w.seconds, 2) << " | " << fixed(w.q.angles.min, 2) << " | "
@@ -70,7 +70,9 @@ std::string table(const SweepArgs& args, std::size_t mps_count, const std::vecto
        << percent(w.q.angles.fraction_50_70) << " | "
        << percent(w.q.angles.fraction_obtuse_triangles) << " | " << fixed(w.q.local_beta.mean, 3)
        << " | " << fixed(w.q.local_beta.max, 3) << " | " << fixed(w.q.edges.min_over_r, 3)
-       << " | " << fixed(w.q.edges.max_over_r, 3) << " | " << fixed(w.peak_power, 2) << " |\n";
+       << " | " << fixed(w.q.edges.max_over_r, 3) << " | " << fixed(w.q.max_coverage_over_r, 3)
+       << (w.q.maximal && w.q.conflict_free ? "" : " (NOT maximal and conflict-free)") << " | "
+       << fixed(w.peak_power, 2) << " |\n";
   }
   md << "\n| CVT at the count of eta | vertices | time s | min angle | max angle | mean "
         "abs(a-60) | in [50,70] | obtuse triangles | beta mean | beta max | edge min/r | edge "

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <memory>
 
+#include "command_domain.h"
 #include "commands.h"
 #include "disktune/density.h"
 #include "disktune/errors.h"
@@ -42,14 +43,13 @@ Method method_named(const std::string& name) {
 int run_tune(const TuneJob& job) {
   check_output_folder(job.output);
   check_output_folder(job.svg);
-  const PeriodicBox box(job.domain.width, job.domain.height);
+  const CommandDomain domain = open_domain(job.domain);
   const double r = job.domain.radius;
-  box.validate_radius(r);
-  const std::size_t target = target_count(job.target, r, box.area());  // fail early
+  domain.validate_radius(r);
+  const std::size_t target = target_count(job.target, r, domain.area());  // fail early
   Rng rng(job.seed);
   const auto t0 = std::chrono::steady_clock::now();
-  Packing packing = job.input.empty() ? sample_mps(box, r, rng) : read_packing_csv(job.input, box, r);
-  if (!job.input.empty()) validate_packing(packing, job.input);
+  Packing packing = job.input.empty() ? domain.sample(r, rng) : domain.read(job.input, r, true);
   const std::size_t start = packing.size();
 
   ProgressBar bar;
@@ -61,7 +61,7 @@ int run_tune(const TuneJob& job) {
                   p.area_fraction, to_string(p.phase).c_str());
     bar.update(static_cast<double>(p.count) - start, static_cast<double>(target) - start, status);
   };
-  const TuneResult res = tune(packing, box, job.target, rng, options);
+  const TuneResult res = domain.tune(packing, job.target, rng, options);
   bar.clear();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
@@ -69,14 +69,14 @@ int run_tune(const TuneJob& job) {
   if (!job.svg.empty()) write_packing_svg(job.svg, packing);
   std::printf("tune: %zu -> %zu disks (target %zu%s), eta = %.4f, rho = %.4f, phase %s, %.3f s%s%s\n",
               start, res.count, res.target, res.reached ? ", reached" : ", NOT reached",
-              area_fraction(res.count, r, box.area()),
-              relative_radius(res.count, r, box.area()), to_string(res.last_phase).c_str(),
+              area_fraction(res.count, r, domain.area()),
+              relative_radius(res.count, r, domain.area()), to_string(res.last_phase).c_str(),
               seconds, job.output.empty() ? "" : " -> ", job.output.c_str());
   if (!res.reached) {
     std::fprintf(stderr,
                  "disktune: the target was not reached: no phase makes progress beyond %zu disks "
                  "(eta %.4f); the closest packing was written\n",
-                 res.count, area_fraction(res.count, r, box.area()));
+                 res.count, area_fraction(res.count, r, domain.area()));
     return kExitNotReached;
   }
   return kExitOk;

@@ -257,4 +257,38 @@ QualityReport measure_quality(const Packing& packing, const TriangleMesh& mesh, 
   return q;
 }
 
+PlanarQualityReport measure_planar_quality(const Packing& packing, const PlanarMesh& mesh, double r,
+                                           double area) {
+  if (packing.empty()) throw InvalidInput("cannot measure an empty packing: it has no disks");
+  check_uniform_radius(packing, r);
+  PlanarQualityReport q;
+  q.radius = r;
+  q.area = area;
+  q.count = packing.size();
+  q.area_fraction = area_fraction(q.count, r, area);
+  q.relative_radius = relative_radius(q.count, r, area);
+  q.maximal = is_maximal(packing);
+  q.conflict_free = is_conflict_free(packing, r);
+  // The nearest pair need not be a mesh edge (a constraint may cut it): ask the grid.
+  double nearest2 = kInf;
+  for (const DiskId id : packing.ids()) {
+    if (packing.flags(id) & kFixed) ++q.boundary_count;
+    packing.for_each_near(packing.center(id), 2 * r, [&](const Neighbor& n) {
+      if (n.id != id) nearest2 = std::min(nearest2, n.d2);
+    });
+  }
+  q.min_distance_over_r = std::sqrt(nearest2) / r;
+  q.all = measure_planar_mesh(mesh, r);
+  PlanarMesh interior{mesh.vertices, mesh.vertex_disk, {}}, boundary = interior;
+  for (const auto& t : mesh.triangles) {
+    const bool on_boundary = std::any_of(t.begin(), t.end(), [&](std::uint32_t v) {
+      return mesh.vertex_disk[v] != kNoDisk && (packing.flags(mesh.vertex_disk[v]) & kFixed);
+    });
+    (on_boundary ? boundary : interior).triangles.push_back(t);
+  }
+  if (!interior.triangles.empty()) q.interior = measure_planar_mesh(interior, r);
+  if (!boundary.triangles.empty()) q.boundary = measure_planar_mesh(boundary, r);
+  return q;
+}
+
 }  // namespace disktune

@@ -7,9 +7,14 @@
 #include "svg_canvas.h"
 
 namespace disktune {
+namespace {
 
-void write_mesh_svg(const std::string& path, const TriangleMesh& mesh, const Packing& packing,
-                    const MeshSvgStyle& style) {
+using Edges = std::vector<std::array<std::uint32_t, 2>>;
+
+/// One picture for both mesh kinds: the disks at half radius, then each edge
+/// vertices[a]..vertices[b] once, every periodic image that reaches into the frame.
+void write_edges_svg(const std::string& path, const std::vector<Vec2>& vertices, const Edges& edges,
+                     const Packing& packing, const MeshSvgStyle& style) {
   const detail::SvgCanvas canvas(packing.frame(), style.pixels);
   write_file_atomically(path, [&](std::ostream& out) {
     canvas.begin(out);
@@ -18,16 +23,18 @@ void write_mesh_svg(const std::string& path, const TriangleMesh& mesh, const Pac
     for (const DiskId id : packing.ids()) {
       const double half = packing.radius(id) / 2;
       const Vec2 c = packing.center(id);
+      // Light, so the edges stay readable over them.
+      const char* fill = (packing.flags(id) & kFixed) ? " fill=\"#f0a0a0\"" : "";
       canvas.for_each_image(c - Vec2{half, half}, c + Vec2{half, half}, [&](Vec2 s) {
         const Vec2 q = canvas.px(c + s);
-        std::snprintf(buf, sizeof buf, "<circle cx=\"%.3f\" cy=\"%.3f\" r=\"%.3f\"/>\n", q.x, q.y,
-                      half * canvas.scale());
+        std::snprintf(buf, sizeof buf, "<circle cx=\"%.3f\" cy=\"%.3f\" r=\"%.3f\"%s/>\n", q.x, q.y,
+                      half * canvas.scale(), fill);
         out << buf;
       });
     }
     out << "</g>\n<path fill=\"none\" stroke=\"#1f4e9c\" stroke-width=\"0.6\" d=\"";
-    for (const auto& e : unique_edges(mesh)) {
-      const Vec2 a = mesh.vertices[e[0]], b = mesh.vertices[e[1]];
+    for (const auto& e : edges) {
+      const Vec2 a = vertices[e[0]], b = vertices[e[1]];
       const Vec2 lo{std::min(a.x, b.x), std::min(a.y, b.y)};
       const Vec2 hi{std::max(a.x, b.x), std::max(a.y, b.y)};
       canvas.for_each_image(lo, hi, [&](Vec2 s) {
@@ -39,6 +46,34 @@ void write_mesh_svg(const std::string& path, const TriangleMesh& mesh, const Pac
     out << "\"/>\n";
     canvas.end(out);
   });
+}
+
+/// Each edge of a planar mesh once (interior edges are shared by two triangles,
+/// boundary edges belong to one).
+Edges planar_edges(const PlanarMesh& mesh) {
+  Edges edges;
+  edges.reserve(3 * mesh.triangles.size());
+  for (const auto& t : mesh.triangles) {
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t u = t[k], v = t[(k + 1) % 3];
+      edges.push_back({std::min(u, v), std::max(u, v)});
+    }
+  }
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  return edges;
+}
+
+}  // namespace
+
+void write_mesh_svg(const std::string& path, const TriangleMesh& mesh, const Packing& packing,
+                    const MeshSvgStyle& style) {
+  write_edges_svg(path, mesh.vertices, unique_edges(mesh), packing, style);
+}
+
+void write_mesh_svg(const std::string& path, const PlanarMesh& mesh, const Packing& packing,
+                    const MeshSvgStyle& style) {
+  write_edges_svg(path, mesh.vertices, planar_edges(mesh), packing, style);
 }
 
 }  // namespace disktune

@@ -81,18 +81,20 @@ std::vector<PointRecord> read_points_csv(const std::string& path) {
   return out;
 }
 
-Packing read_packing_csv(const std::string& path, const PeriodicBox& box, double r) {
-  box.validate_radius(r);
+namespace {
+
+// Reads the CSV into `packing` (frame and radius set), checking each line's radius and,
+// through `outside`, its center: `outside` returns what is wrong, or "" when nothing is.
+template <class Outside>
+void read_disks(const std::string& path, double r, Packing& packing, Outside&& outside) {
   const std::vector<PointRecord> records = read_points_csv(path);
   if (records.empty()) throw InvalidInput("'" + path + "' holds no disks, only a header");
-  Packing packing(box.frame(), r);
   for (std::size_t k = 0; k < records.size(); ++k) {
     const PointRecord& p = records[k];
     std::ostringstream where;
     where << path << ":" << k + 2 << ": ";  // line 1 is the header
-    if (!(p.x >= 0 && p.x < box.width() && p.y >= 0 && p.y < box.height())) {
-      where << "center (" << p.x << ", " << p.y << ") lies outside the " << box.width() << " x "
-            << box.height() << " box; give the box with --width and --height";
+    if (const std::string why = outside(Vec2{p.x, p.y}); !why.empty()) {
+      where << "center (" << p.x << ", " << p.y << ") " << why;
       throw InvalidInput(where.str());
     }
     if (std::abs(p.r - r) > kRelTol * r) {
@@ -102,6 +104,31 @@ Packing read_packing_csv(const std::string& path, const PeriodicBox& box, double
     }
     packing.insert({p.x, p.y}, r);
   }
+}
+
+}  // namespace
+
+Packing read_packing_csv(const std::string& path, const PeriodicBox& box, double r) {
+  box.validate_radius(r);
+  Packing packing(box.frame(), r);
+  read_disks(path, r, packing, [&](Vec2 c) {
+    if (c.x >= 0 && c.x < box.width() && c.y >= 0 && c.y < box.height()) return std::string();
+    std::ostringstream why;
+    why << "lies outside the " << box.width() << " x " << box.height()
+        << " box; give the box with --width and --height";
+    return why.str();
+  });
+  return packing;
+}
+
+Packing read_packing_csv(const std::string& path, std::shared_ptr<const PlanarDomain> domain, double r) {
+  domain->validate_radius(r);
+  Packing packing(domain->frame(), r);
+  packing.set_domain(domain);
+  read_disks(path, r, packing, [&](Vec2 c) {
+    return domain->contains(c) ? std::string()
+                               : std::string("lies outside the domain; give the domain the packing was made for");
+  });
   return packing;
 }
 

@@ -18,6 +18,36 @@ json to_json(const Statistics& s) {
   return {{"min", s.min}, {"mean", s.mean}, {"max", s.max}, {"stddev", s.stddev}};
 }
 
+json to_json(const QualityReport::Angles& a) {
+  return {{"min", a.min},
+          {"max", a.max},
+          {"mean_abs_dev_60", a.mean_abs_dev_60},
+          {"fraction_50_70", a.fraction_50_70},
+          {"fraction_obtuse_triangles", a.fraction_obtuse_triangles},
+          {"histogram", to_json(a.histogram)}};
+}
+
+json to_json(const QualityReport::Edges& e) {
+  return {{"min_over_r", e.min_over_r}, {"max_over_r", e.max_over_r}, {"histogram", to_json(e.histogram)}};
+}
+
+json to_json(const QualityReport::LocalBeta& b) {
+  return {{"min", b.min}, {"mean", b.mean}, {"max", b.max}, {"histogram", to_json(b.histogram)}};
+}
+
+json to_json(const PlanarMeshQuality& m) {
+  return {{"vertex_count", m.vertex_count},
+          {"triangle_count", m.triangle_count},
+          {"interior_vertex_count", m.interior_vertex_count},
+          {"angles", to_json(m.angles)},
+          {"edges", to_json(m.edges)},
+          {"local_beta", to_json(m.local_beta)}};
+}
+
+void write_text(const std::string& path, const std::string& text) {
+  write_file_atomically(path, [&](std::ostream& out) { out << text; });
+}
+
 }  // namespace
 
 std::string quality_json(const QualityReport& q, const Spectrum* spectrum) {
@@ -33,19 +63,9 @@ std::string quality_json(const QualityReport& q, const Spectrum* spectrum) {
   j["max_coverage_over_r"] = q.max_coverage_over_r;
   j["maximal"] = q.maximal;
   j["conflict_free"] = q.conflict_free;
-  j["angles"] = {{"min", q.angles.min},
-                 {"max", q.angles.max},
-                 {"mean_abs_dev_60", q.angles.mean_abs_dev_60},
-                 {"fraction_50_70", q.angles.fraction_50_70},
-                 {"fraction_obtuse_triangles", q.angles.fraction_obtuse_triangles},
-                 {"histogram", to_json(q.angles.histogram)}};
-  j["edges"] = {{"min_over_r", q.edges.min_over_r},
-                {"max_over_r", q.edges.max_over_r},
-                {"histogram", to_json(q.edges.histogram)}};
-  j["local_beta"] = {{"min", q.local_beta.min},
-                     {"mean", q.local_beta.mean},
-                     {"max", q.local_beta.max},
-                     {"histogram", to_json(q.local_beta.histogram)}};
+  j["angles"] = to_json(q.angles);
+  j["edges"] = to_json(q.edges);
+  j["local_beta"] = to_json(q.local_beta);
   j["voronoi"] = {{"aspect_ratio", to_json(q.voronoi.aspect_ratio)},
                   {"cell_area", to_json(q.voronoi.cell_area)},
                   {"cell_area_cv", q.voronoi.cell_area_cv}};
@@ -64,8 +84,28 @@ std::string quality_json(const QualityReport& q, const Spectrum* spectrum) {
 
 void write_quality_json(const std::string& path, const QualityReport& report,
                         const Spectrum* spectrum) {
-  const std::string text = quality_json(report, spectrum);
-  write_file_atomically(path, [&](std::ostream& out) { out << text; });
+  write_text(path, quality_json(report, spectrum));
+}
+
+std::string quality_json(const PlanarQualityReport& q) {
+  json j;
+  j["radius"] = q.radius;
+  j["area"] = q.area;
+  j["count"] = q.count;
+  j["boundary_count"] = q.boundary_count;
+  j["area_fraction"] = q.area_fraction;
+  j["relative_radius"] = q.relative_radius;
+  j["min_distance_over_r"] = q.min_distance_over_r;
+  j["maximal"] = q.maximal;
+  j["conflict_free"] = q.conflict_free;
+  j["mesh"] = to_json(q.all);
+  j["interior_triangles"] = to_json(q.interior);
+  j["boundary_triangles"] = to_json(q.boundary);
+  return j.dump(2) + "\n";
+}
+
+void write_quality_json(const std::string& path, const PlanarQualityReport& report) {
+  write_text(path, quality_json(report));
 }
 
 }  // namespace disktune

@@ -58,7 +58,7 @@ std::vector<DiskId> Packing::ids() const {
 }
 
 bool Packing::conflicts(Vec2 q, DiskId ignore) const {
-  return any_near(q, max_radius_, [&](const Neighbor& n) {
+  return !inside(q) || any_near(q, max_radius_, [&](const Neighbor& n) {
     return n.id != ignore && is_conflict(n.d2, n.radius);
   });
 }

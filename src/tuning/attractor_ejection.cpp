@@ -51,7 +51,8 @@ std::size_t attractor_eject(UndoLog& log, Packing& packing, DiskId p, Rng& rng, 
     corners_in_region(packing, q.image, r, {q.id}, corners);
     const Vec2 v = pc - q.image;
     const double t = reach_toward(packing, p, q, v, corners, r);
-    if (t > 0) log.move(q.id, q.image + v * t);  // still covers its void: no repair
+    // Still covers its void: no repair. (A non-convex domain may not hold the target.)
+    if (t > 0 && packing.inside(q.image + v * t)) log.move(q.id, q.image + v * t);
   }
   corners.clear();
   corners_in_region(packing, pc, r, {p}, corners);

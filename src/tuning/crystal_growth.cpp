@@ -86,8 +86,15 @@ class Crystal {
   // Brings a disk to site a and freezes it: the nearest mobile disk covering a moves
   // there (the disks it would conflict with go, their voids are refilled), or, when
   // injecting and nothing mobile covers a, a new disk is put there if there is room.
-  // False when nothing could be done.
+  // False when nothing could be done; the caller then takes back what `log` holds since
+  // the call.
   bool settle(detail::UndoLog& log, Vec2 a, std::size_t room) {
+    // A site outside the domain, or one a fixed (boundary) disk holds, stays empty.
+    if (!p_.inside(a) || p_.any_near(a, r_, [&](const Neighbor& n) {
+          return (p_.flags(n.id) & kFixed) && is_conflict(n.d2, n.radius);
+        })) {
+      return false;
+    }
     Neighbor mover{kNoDisk, {}, 0, 0};
     p_.for_each_near(a, r_ * (1 + kRelTol), [&](const Neighbor& n) {
       if (mobile(p_, n.id) && is_covered(n.d2, n.radius) && (mover.id == kNoDisk || n.d2 < mover.d2)) {
@@ -110,7 +117,13 @@ class Crystal {
     });
     for (const DiskId x : doomed) log.remove(x);
     log.move(mover.id, a);
-    for (const Vec2& h : holes) detail::repair_void(log, p_, h, r_, rng_, room + doomed.size());
+    for (const Vec2& h : holes) {
+      // A void that needs more disks than the target allows is left half filled by
+      // repair_void: the step fails, and the caller takes it back.
+      if (detail::repair_void(log, p_, h, r_, rng_, room + doomed.size()) > room + doomed.size()) {
+        return false;
+      }
+    }
     freeze(log, mover.id, a);
     return true;
   }
@@ -167,7 +180,10 @@ class Crystal {
       const std::size_t step = batch.mark();
       const std::size_t room = inject_ ? start + max_change - std::min(p_.size(), start + max_change)
                                        : max_change;
-      if (!settle(batch, a, room)) continue;
+      if (!settle(batch, a, room)) {
+        batch.revert_to(step);
+        continue;
+      }
       if (!inject_) {
         // The mobile disks around the new site: attractor ejection (3.2: disks that cover
         // no attractor move as in attractor ejection) removes those the lattice made

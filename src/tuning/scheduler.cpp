@@ -6,6 +6,7 @@
 #include <cmath>
 #include <vector>
 
+#include "disktune/boundary.h"
 #include "disktune/density.h"
 #include "disktune/errors.h"
 #include "disktune/tuning.h"
@@ -59,21 +60,18 @@ std::vector<PhasePlan> plan_for(const TuneOptions& o, bool eject) {
   return {};
 }
 
-}  // namespace
-
-TuneResult tune(Packing& packing, const PeriodicBox& box, const Target& target, Rng& rng,
-                const TuneOptions& options) {
-  const auto t0 = std::chrono::steady_clock::now();
-  if (packing.empty()) throw InvalidInput("tune: the packing is empty; sample it first");
+// The scheduler for a domain of the given area.
+TuneResult tune_in(Packing& packing, double area, const Target& target, Rng& rng,
+                   const TuneOptions& options, std::chrono::steady_clock::time_point t0) {
   const double r = packing.max_radius();
   TuneResult result;
-  result.target = target_count(target, r, box.area());
+  result.target = target_count(target, r, area);
   const bool eject = result.target < packing.size();
   // Disks still to add or remove: what each operation may change at most.
   auto missing = [&] {
     return eject ? packing.size() - result.target : result.target - packing.size();
   };
-  auto eta = [&] { return area_fraction(packing.size(), r, box.area()); };
+  auto eta = [&] { return area_fraction(packing.size(), r, area); };
   auto report = [&](Phase phase) {
     if (options.on_progress) options.on_progress({packing.size(), eta(), phase});
   };
@@ -117,6 +115,29 @@ TuneResult tune(Packing& packing, const PeriodicBox& box, const Target& target, 
   result.reached = result.count == result.target;
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return result;
+}
+
+}  // namespace
+
+TuneResult tune(Packing& packing, const PeriodicBox& box, const Target& target, Rng& rng,
+                const TuneOptions& options) {
+  const auto t0 = std::chrono::steady_clock::now();
+  if (packing.empty()) throw InvalidInput("tune: the packing is empty; sample it first");
+  return tune_in(packing, box.area(), target, rng, options, t0);
+}
+
+TuneResult tune(Packing& packing, const PlanarDomain& domain, const Target& target, Rng& rng,
+                const TuneOptions& options) {
+  const auto t0 = std::chrono::steady_clock::now();
+  if (packing.empty()) throw InvalidInput("tune: the packing is empty; sample it first");
+  if (packing.domain() != &domain) {
+    throw InvalidInput("tune: the packing is not restricted to this domain (Packing::set_domain)");
+  }
+  // The boundary first, at the spacing of a hexagonal packing of the target's count.
+  const double r = packing.max_radius();
+  const auto n = static_cast<double>(target_count(target, r, domain.area()));
+  tune_boundary(packing, domain, std::sqrt(2 * domain.area() / (std::sqrt(3.0) * n)), rng);
+  return tune_in(packing, domain.area(), target, rng, options, t0);
 }
 
 }  // namespace disktune

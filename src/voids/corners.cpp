@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <sstream>
 
 #include "disktune/errors.h"
@@ -35,6 +36,18 @@ bool contains(const std::vector<DiskId>& ids, DiskId id) {
   return std::find(ids.begin(), ids.end(), id) != ids.end();
 }
 
+// In a planar domain, a point of the boundary no disk covers, if any. Together with
+// the corners inside the domain this decides maximality: a void that reaches no
+// boundary point is bounded by circles alone, so it has a corner in the domain.
+std::optional<Vec2> uncovered_boundary_point(const Packing& packing) {
+  if (!packing.domain()) return std::nullopt;
+  for (const BoundarySegment& s : packing.domain()->segments()) {
+    const auto gaps = uncovered_on_segment(packing, s.a, s.b, false);
+    if (!gaps.empty()) return s.a + (s.b - s.a) * (0.5 * (gaps[0][0] + gaps[0][1]));
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 void corners_on_circle(const Packing& packing, DiskId p, std::vector<Corner>& out) {
@@ -52,14 +65,19 @@ void corners_on_circle(const Packing& packing, DiskId p, std::vector<Corner>& ou
     const CircleIntersection x = intersect_circles(c, r, near[i].image, near[i].radius);
     met = met || x.count > 0;
     for (int k = 0; k < x.count; ++k) {
-      if (!corner_covered(near, x.points[k], c, near[i].image, i, none)) {
+      if (packing.inside(x.points[k]) && !corner_covered(near, x.points[k], c, near[i].image, i, none)) {
         out.push_back({x.points[k], p, near[i].id});
       }
     }
   }
-  if (!met) {
-    const Vec2 probe = c + Vec2{r, 0};
-    if (!covered_by_others(near, probe, none)) out.push_back({probe, p, kNoDisk});
+  if (!met) {  // the void surrounds p: any uncovered point of its circle in the domain
+    for (const Vec2 dir : {Vec2{1, 0}, Vec2{0, 1}, Vec2{-1, 0}, Vec2{0, -1}}) {
+      const Vec2 probe = c + dir * r;
+      if (packing.inside(probe) && !covered_by_others(near, probe, none)) {
+        out.push_back({probe, p, kNoDisk});
+        break;
+      }
+    }
   }
 }
 
@@ -85,7 +103,7 @@ void corners_in_region(const Packing& packing, Vec2 center, double R,
           intersect_circles(near[i].image, near[i].radius, near[j].image, near[j].radius);
       for (int k = 0; k < x.count; ++k) {
         const Vec2 pt = x.points[k];
-        if (squared_distance(pt, center) <= lim * lim &&
+        if (squared_distance(pt, center) <= lim * lim && packing.inside(pt) &&
             !corner_covered(near, pt, near[i].image, near[j].image, i, j)) {
           out.push_back({pt, near[i].id, near[j].id});
         }
@@ -99,6 +117,11 @@ void validate_packing(const Packing& packing, const std::string& what) {
   msg << what << ": ";
   if (packing.empty()) {
     msg << "holds no disks";
+    throw InvalidInput(msg.str());
+  }
+  if (const auto hole = uncovered_boundary_point(packing)) {
+    msg << "not maximal: the boundary point (" << hole->x << ", " << hole->y
+        << ") is covered by no disk; start from a maximal sample ('disktune sample')";
     throw InvalidInput(msg.str());
   }
   std::vector<Corner> corners;
@@ -126,7 +149,7 @@ void validate_packing(const Packing& packing, const std::string& what) {
 }
 
 bool is_maximal(const Packing& packing) {
-  if (packing.empty()) return false;
+  if (packing.empty() || uncovered_boundary_point(packing)) return false;
   std::vector<Corner> corners;
   for (DiskId id = 0; id < packing.id_bound(); ++id) {
     if (!packing.alive(id)) continue;
