@@ -130,5 +130,49 @@ grep -q '"spectrum"' ns.json && { echo "FAIL --no-spectrum wrote a spectrum"; fa
 expect report-spectrum-window 0 "window \|k\| < 9 " -- "$bin" report q.csv --radius 0.05 --spectrum-window 9
 expect report-spectrum-window-bad 2 "too small" -- "$bin" report q.csv --radius 0.05 --spectrum-window 1
 
+# planar domains: a square with a square hole, in Triangle's .poly format
+cat > hole.poly <<'POLY'
+# unit square with a centered hole of side 0.4
+8 2 0 0
+1 0 0
+2 1 0
+3 1 1
+4 0 1
+5 0.3 0.3
+6 0.7 0.3
+7 0.7 0.7
+8 0.3 0.7
+8 0
+1 1 2
+2 2 3
+3 3 4
+4 4 1
+5 5 6
+6 6 7
+7 7 8
+8 8 5
+1
+1 0.5 0.5
+POLY
+expect planar-sample 0 "planar domain hole.poly \(2 boundary loops, area 0.84\)" -- "$bin" sample --domain hole.poly --radius 0.05 --output p.csv --svg p.svg
+expect planar-tune 0 "reached" -- "$bin" tune --domain hole.poly --radius 0.05 --input p.csv --target-fraction 0.8 --output p8.csv
+expect planar-mesh 0 "constrained Delaunay" -- "$bin" mesh p8.csv --domain hole.poly --radius 0.05 --output p8.off
+expect planar-report 0 "maximal, conflict-free" -- "$bin" report p8.csv --domain hole.poly --radius 0.05 --json p8.json --svg p8.svg
+grep -q '"interior_triangles"' p8.json && grep -q '"boundary_triangles"' p8.json && pass=$((pass + 1)) || { echo "FAIL planar report keys"; fails=$((fails + 1)); }
+expect planar-angle 2 "angle injection" -- "$bin" tune --domain hole.poly --radius 0.05 --input p.csv --target-fraction 0.8 --method angle
+expect planar-report-png 2 "periodic box only" -- "$bin" report p8.csv --domain hole.poly --radius 0.05 --png-dir pics
+expect planar-big-radius 2 "corners" -- "$bin" sample --domain hole.poly --radius 0.5 --output z.csv
+absent planar-big-radius-output z.csv
+printf 'x,y,r\n0.5,0.5,0.05\n' > inhole.csv
+expect planar-point-in-hole 2 "inhole.csv:2: center \(0.5, 0.5\) lies outside the domain" -- "$bin" tune --domain hole.poly --radius 0.05 --input inhole.csv --target-fraction 0.8
+expect planar-missing 3 "cannot|no such|does not exist" -- "$bin" sample --domain nothere.poly --radius 0.05
+sed 's/^3 3 4$/3 3 1/; s/^4 4 1$/4 4 3/' hole.poly > bad.poly
+expect planar-self-intersecting 2 "bad.poly" -- "$bin" sample --domain bad.poly --radius 0.05
+expect planar-bad-extension 2 "\.poly" -- "$bin" sample --domain hole.txt --radius 0.05
+
+# the sweep table (tiny)
+expect sweep 0 "\| CVT at the count of eta" -- "$bin" sweep --radius 0.05 --eta 0 0.6 --cvt-iterations 5 --output sweep.md
+grep -q "lloyd_optimize_mesh_2" sweep.md && pass=$((pass + 1)) || { echo "FAIL sweep.md"; fails=$((fails + 1)); }
+
 echo "$pass passed, $fails failed"
 [ "$fails" -eq 0 ]

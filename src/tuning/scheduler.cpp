@@ -133,6 +133,10 @@ TuneResult tune(Packing& packing, const PlanarDomain& domain, const Target& targ
   if (packing.domain() != &domain) {
     throw InvalidInput("tune: the packing is not restricted to this domain (Packing::set_domain)");
   }
+  if (options.method == Method::angle_injection) {
+    throw InvalidInput("tune: angle injection triangulates the periodic box; in a planar domain "
+                       "use void, repeller or crystal injection");
+  }
   // The boundary first, at the spacing of a hexagonal packing of the target's count.
   const double r = packing.max_radius();
   const auto n = static_cast<double>(target_count(target, r, domain.area()));
