@@ -4,6 +4,7 @@
 // periodic images of a shape that reach into it.
 #pragma once
 
+#include <algorithm>
 #include <cstdio>
 #include <ostream>
 
@@ -14,7 +15,7 @@ namespace disktune::detail {
 class SvgCanvas {
  public:
   SvgCanvas(const Frame& frame, double pixels)
-      : f_(frame), scale_(pixels / frame.extent.x), w_(pixels), h_(frame.extent.y * scale_) {}
+      : f_(padded(frame)), scale_(pixels / f_.extent.x), w_(pixels), h_(f_.extent.y * scale_) {}
 
   double scale() const { return scale_; }
   Vec2 px(Vec2 p) const { return {(p.x - f_.origin.x) * scale_, h_ - (p.y - f_.origin.y) * scale_}; }
@@ -54,6 +55,14 @@ class SvgCanvas {
   }
 
  private:
+  // A bounded domain's frame is its bounding box, so disks on the boundary would be cut
+  // in half: show a margin around it. A periodic frame is the whole domain.
+  static Frame padded(Frame f) {
+    if (f.periodic) return f;
+    const double m = 0.02 * std::max(f.extent.x, f.extent.y);
+    return {f.origin - Vec2{m, m}, f.extent + Vec2{2 * m, 2 * m}, false};
+  }
+
   Frame f_;
   double scale_, w_, h_;
 };

@@ -13,7 +13,7 @@
 //   by a symbolic perturbation that depends on the lexicographic order of the points,
 //   which a translation does not change. Two copies of a cocircular cell (every cell of
 //   a lattice) are therefore triangulated alike.
-// The only CGAL translation unit of the library: each costs ~40 s to compile.
+// One of the few CGAL translation units of the library: each costs ~40 s to compile.
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
