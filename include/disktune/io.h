@@ -37,6 +37,12 @@ std::vector<PointRecord> read_points_csv(const std::string& path);
 /// or maximality (see validate_packing in voids.h).
 Packing read_packing_csv(const std::string& path, const PeriodicBox& box, double r);
 
+/// Reads a CSV of disks into `packing`, prepared with its frame and, if any, domain and
+/// sizing: each center must lie in the box or domain and each radius be the packing's
+/// radius_at(center). Throws InvalidInput naming the line, IoError when the file cannot
+/// be read. No conflict or maximality check (see validate_packing in voids.h).
+void read_packing_csv(const std::string& path, Packing& packing);
+
 /// The same for a planar domain: the packing is restricted to it (Packing::set_domain);
 /// a center outside the domain is refused. Boundary disks are not yet marked: see
 /// boundary_loops in boundary.h.

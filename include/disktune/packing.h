@@ -14,6 +14,7 @@
 #include "disktune/frame.h"
 #include "disktune/geometry.h"
 #include "disktune/planar_domain.h"
+#include "disktune/sizing.h"
 #include "disktune/spatial_grid.h"
 #include "disktune/tolerance.h"
 
@@ -31,9 +32,10 @@ class Packing {
   Packing(const Frame& frame, double max_radius);
 
   /// Adds a disk and returns its id. Ids are stable until the disk is removed, and a
-  /// removed id may be reused by a later insert.
+  /// removed id may be reused by a later insert. With a sizing, pass radius_at(center).
   DiskId insert(Vec2 center, double radius, std::uint8_t flags = 0);
   void remove(DiskId id);
+  /// Moves a disk; with a sizing its radius becomes radius_at(center).
   void move(DiskId id, Vec2 center);
 
   bool alive(DiskId id) const { return id < radius_.size() && radius_[id] > 0; }
@@ -64,6 +66,16 @@ class Packing {
     return grid_.any_near(q, R, std::forward<Pred>(pred));
   }
 
+  /// Spatially varying radii (paper, section 6): a disk inserted or moved to x takes the
+  /// radius r(x) (radius_at), and the conflict rule stays "a new center must lie outside
+  /// every disk" (the moved or injected disk is the latest arrival). The `max_radius`
+  /// given at construction must bound r; copies share the sizing.
+  void set_sizing(std::shared_ptr<const Sizing> sizing) { sizing_ = std::move(sizing); }
+  const Sizing* sizing() const { return sizing_.get(); }
+  /// The radius a disk centered at q gets: r(q) with a sizing, max_radius() without.
+  /// Throws InvalidInput when r(q) is not in (0, max_radius()].
+  double radius_at(Vec2 q) const { return sizing_ ? sized_radius(q) : max_radius_; }
+
   /// Restricts the packing to a planar domain inside its frame: void corners outside
   /// the domain are no voids (voids.h), and a center outside it is a conflict. Copies
   /// of the packing share the domain.
@@ -88,6 +100,8 @@ class Packing {
   std::vector<DiskId> free_ids_;
   std::size_t live_ = 0;
   std::shared_ptr<const PlanarDomain> domain_;
+  std::shared_ptr<const Sizing> sizing_;
+  double sized_radius(Vec2 q) const;
 };
 
 }  // namespace disktune

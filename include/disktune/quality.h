@@ -83,21 +83,26 @@ struct PlanarMeshQuality {
 };
 /// Lengths are measured in units of r. Throws InvalidInput for a mesh without triangles.
 PlanarMeshQuality measure_planar_mesh(const PlanarMesh& mesh, double r);
+/// The same with a radius per vertex (varying radii): each edge's length is measured
+/// in units of the mean radius of its two ends.
+PlanarMeshQuality measure_planar_mesh(const PlanarMesh& mesh, const std::vector<double>& vertex_radius);
 
 /// The report for a packing of a planar domain and its constrained Delaunay mesh: the
 /// density and exact checks as for the torus, and the mesh's shape measures over all
 /// triangles, the interior ones (no corner on a boundary disk) and the boundary ones.
 struct PlanarQualityReport {
-  double radius = 0, area = 0;
+  double radius = 0;  // the one radius (0 with a sizing: radii vary)
+  double area = 0;
   std::size_t count = 0, boundary_count = 0;  // all disks; the fixed boundary disks
+  /// eta (relative to the sizing for varying radii: density_unit) and rho.
   double area_fraction = 0, relative_radius = 0;
-  double min_distance_over_r = 0;  // shortest center distance, over all pairs
-  bool maximal = false, conflict_free = false;
-  PlanarMeshQuality all, interior, boundary;
+  /// Shortest center distance over the smaller radius of the pair, over all pairs.
+  double min_distance_over_r = 0;
+  bool maximal = false, conflict_free = false;  // conflict: a pair covering each other's centers
+  PlanarMeshQuality all, interior, boundary;   // edges over the mean radius of their ends
 };
-/// Throws InvalidInput for an empty packing or a radius other than r.
-PlanarQualityReport measure_planar_quality(const Packing& packing, const PlanarMesh& mesh, double r,
-                                           double area);
+/// Throws InvalidInput for an empty packing.
+PlanarQualityReport measure_planar_quality(const Packing& packing, const PlanarMesh& mesh, double area);
 
 /// Measures `packing`, whose disks all have radius `r`, and its periodic Delaunay mesh
 /// (from periodic_delaunay(packing)); distances are relative to r. Throws InvalidInput

@@ -9,6 +9,7 @@
 #include "disktune/periodic_box.h"
 #include "disktune/planar_domain.h"
 #include "disktune/random.h"
+#include "disktune/sizing.h"
 
 namespace disktune {
 
@@ -46,5 +47,22 @@ Packing sample_mps(const PeriodicBox& box, double r, Rng& rng, const MpsOptions&
 /// it (the corner itself when darts miss). The packing is restricted to the domain
 /// (Packing::set_domain). Throws InvalidInput for a bad radius.
 Packing sample_mps(std::shared_ptr<const PlanarDomain> domain, double r, Rng& rng);
+
+/// The same with spatially varying radii r(x) (paper, section 6): each disk takes the
+/// sizing's radius at its center, and a new center must lie outside every disk. The
+/// sizing is sampled over the domain first (measure_sizing) and refused when its
+/// gradation is too steep (check_gradation).
+Packing sample_mps(std::shared_ptr<const PlanarDomain> domain, std::shared_ptr<const Sizing> sizing,
+                   Rng& rng);
+
+/// An empty packing of the frame for the sizing's radii, restricted to the domain (none:
+/// nullptr): the sizing is sampled (measure_sizing, its figures in `stats`) and refused
+/// when too steep (check_gradation). For reading a varying-radius packing back.
+Packing sized_packing(const Frame& frame, std::shared_ptr<const PlanarDomain> domain,
+                      std::shared_ptr<const Sizing> sizing, SizingStats* stats = nullptr);
+
+/// A maximal sample of the periodic box with spatially varying radii (darts on a grid,
+/// then exact void filling; r should be periodic too, or the seam is a steep gradation).
+Packing sample_mps(const PeriodicBox& box, std::shared_ptr<const Sizing> sizing, Rng& rng);
 
 }  // namespace disktune

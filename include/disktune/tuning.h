@@ -31,6 +31,12 @@ struct Target {
 /// InvalidInput for a target that is not finite and positive, or above the densest
 /// (hexagonal) packing.
 std::size_t target_count(const Target& target, double r, double area);
+/// The count at area fraction 1 for a packing in a domain of the given area: A / (pi r^2
+/// / 4) for one radius, the integral of 4 / (pi r(x)^2) with a sizing (then "area
+/// fraction" is this relative density: docs/sizing.md).
+double density_unit(const Packing& packing, double area);
+/// The count a target means for this packing (its radius or its sizing).
+std::size_t target_count(const Target& target, const Packing& packing, double area);
 
 /// The operations, and the phases of the scheduler that run them.
 enum class Phase {
@@ -50,7 +56,10 @@ std::string to_string(Phase phase);
 /// the others run one phase alone (angle injection is not part of the automatic
 /// schedule: the paper offers it as an alternative that targets obtuse triangles).
 /// Targets below the current count run ejection: automatic is sifting, then attractor
-/// ejection.
+/// ejection, then crystal ejection. Crystal injection (alone or in the automatic
+/// schedule) is followed by repeller injection for the last few disks, which crystal steps
+/// near the exact target cannot add without passing it. With a sizing (varying radii)
+/// there are no crystal phases (paper, 6).
 enum class Method {
   automatic,
   void_injection,

@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "command_domain.h"
 
+#include <cmath>
 #include <sstream>
 
 #include "disktune/boundary.h"
+#include "disktune/errors.h"
 #include "disktune/io.h"
 #include "disktune/sampling.h"
 #include "disktune/voids.h"
@@ -18,6 +20,16 @@ CommandDomain open_domain(const DomainArgs& args) {
     d.planar = std::make_shared<const PlanarDomain>(read_planar_domain(args.kind));
   }
   d.file = args.kind;
+  if (args.has_radius == !args.sizing.empty()) {
+    throw InvalidInput("give the disk radius with --radius R, or radii that vary with --sizing SPEC "
+                       "(one of the two)");
+  }
+  if (args.sizing.empty()) {
+    d.radius = args.radius;
+    d.box ? d.box->validate_radius(d.radius) : d.planar->validate_radius(d.radius);
+  } else {
+    d.sizing = std::make_shared<const Sizing>(parse_sizing(args.sizing, d.planar));
+  }
   return d;
 }
 
@@ -32,16 +44,40 @@ std::string CommandDomain::describe() const {
   return s.str();
 }
 
-void CommandDomain::validate_radius(double r) const {
-  box ? box->validate_radius(r) : planar->validate_radius(r);
+std::string CommandDomain::radius_text() const {
+  std::ostringstream s;
+  if (sizing) {
+    s << "sizing " << sizing->description();
+  } else {
+    s << "r = " << radius;
+  }
+  return s.str();
 }
 
-Packing CommandDomain::sample(double r, Rng& rng) const {
-  return box ? sample_mps(*box, r, rng) : sample_mps(planar, r, rng);
+std::string CommandDomain::density_text(std::size_t count) const {
+  const double eta = static_cast<double>(count) / density_unit(empty_packing(), area());
+  char text[64];
+  std::snprintf(text, sizeof text, "eta = %.4f, rho = %.4f", eta,
+                std::sqrt(eta * 2 * std::sqrt(3.0) / 3.14159265358979323846));
+  return text;
 }
 
-Packing CommandDomain::read(const std::string& csv, double r, bool check) const {
-  Packing packing = box ? read_packing_csv(csv, *box, r) : read_packing_csv(csv, planar, r);
+Packing CommandDomain::empty_packing() const {
+  const Frame& frame = box ? box->frame() : planar->frame();
+  if (sizing) return sized_packing(frame, planar, sizing);
+  Packing packing(frame, radius);
+  packing.set_domain(planar);
+  return packing;
+}
+
+Packing CommandDomain::sample(Rng& rng) const {
+  if (sizing) return box ? sample_mps(*box, sizing, rng) : sample_mps(planar, sizing, rng);
+  return box ? sample_mps(*box, radius, rng) : sample_mps(planar, radius, rng);
+}
+
+Packing CommandDomain::read(const std::string& csv, bool check) const {
+  Packing packing = empty_packing();
+  read_packing_csv(csv, packing);
   if (planar) boundary_loops(packing, *planar);
   if (check) validate_packing(packing, csv);
   return packing;

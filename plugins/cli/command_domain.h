@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The domain a command works on, from --domain: the periodic box, or a planar domain
-// read from a .poly, .off or .obj file. One place decides how each kind is sampled,
-// read back, checked and tuned, so every command treats them alike.
+// The domain a command works on, from --domain, --width, --height, --radius and
+// --sizing: the periodic box or a planar domain read from a .poly, .off or .obj file,
+// with one radius or a sizing function. One place decides how each is sampled, read
+// back, checked and tuned, so every command treats them alike.
 #pragma once
 
 #include <memory>
@@ -12,6 +13,7 @@
 #include "disktune/packing.h"
 #include "disktune/periodic_box.h"
 #include "disktune/planar_domain.h"
+#include "disktune/sizing.h"
 #include "disktune/tuning.h"
 
 namespace disktune::cli {
@@ -20,20 +22,29 @@ struct CommandDomain {
   std::optional<PeriodicBox> box;              // --domain periodic
   std::shared_ptr<const PlanarDomain> planar;  // --domain FILE
   std::string file;                            // the file's name, for messages
+  double radius = 0;                           // --radius (0 with a sizing)
+  std::shared_ptr<const Sizing> sizing;        // --sizing
 
   double area() const { return box ? box->area() : planar->area(); }
-  /// "1 x 1 periodic box" or "planar domain FILE".
+  /// "1 x 1 periodic box" or "planar domain FILE (...)".
   std::string describe() const;
-  void validate_radius(double r) const;
-  Packing sample(double r, Rng& rng) const;
+  /// "r = 0.01" or "sizing 0.005 + 0.01*x".
+  std::string radius_text() const;
+  /// "eta = 0.5474, rho = 0.7769" for a count (eta relative to the sizing: docs/sizing.md).
+  std::string density_text(std::size_t count) const;
+  /// An empty packing for this domain and radius (a sizing is sampled and checked).
+  Packing empty_packing() const;
+  Packing sample(Rng& rng) const;
   /// Reads a packing written for this domain; in a planar domain its boundary disks
   /// become fixed. With `check`, throws InvalidInput unless it is conflict-free and
   /// maximal (what tuning starts from; a report measures whatever it gets).
-  Packing read(const std::string& csv, double r, bool check) const;
+  Packing read(const std::string& csv, bool check) const;
   TuneResult tune(Packing& packing, const Target& target, Rng& rng, const TuneOptions& options) const;
 };
 
-/// Opens the domain named by the options (reads and validates a domain file).
+/// Opens the domain named by the options (reads and validates a domain file, parses
+/// and checks the sizing). Throws InvalidInput unless exactly one of --radius and
+/// --sizing is given.
 CommandDomain open_domain(const DomainArgs& args);
 
 }  // namespace disktune::cli

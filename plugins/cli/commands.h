@@ -18,10 +18,13 @@ enum ExitCode : int { kExitOk = 0, kExitInternal = 1, kExitUsage = 2, kExitIo = 
 
 using Action = std::function<int()>;
 
-/// The domain options every command shares: --domain, --width, --height, --radius.
+/// The domain options every command shares: --domain, --width, --height, and the
+/// radius: --radius R, or --sizing SPEC for radii that vary over the domain.
 struct DomainArgs {
   std::string kind = "periodic";
   double width = 1, height = 1, radius = 0;
+  bool has_radius = false;  // --radius was given
+  std::string sizing;
 };
 void add_domain_options(CLI::App* cmd, DomainArgs& domain);
 

@@ -13,6 +13,7 @@ int run_demo() {
               "(see disktune --help)\n");
   SampleJob sample;
   sample.domain.radius = 0.01;
+  sample.domain.has_radius = true;
   sample.output = "disktune-demo/mps.csv";
   sample.svg = "disktune-demo/mps.svg";
   if (const int rc = run_sample(sample); rc != kExitOk) return rc;

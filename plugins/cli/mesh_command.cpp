@@ -26,7 +26,7 @@ int run_mesh(const MeshArgs& args) {
   mesh_format_for_path(args.output);  // a bad extension fails before any work
   check_output_folder(args.output);
   const CommandDomain domain = open_domain(args.domain);
-  Packing packing = domain.read(args.input, args.domain.radius, false);
+  Packing packing = domain.read(args.input, false);
   const auto t0 = std::chrono::steady_clock::now();
   if (domain.planar) {
     const PlanarMesh mesh = constrained_delaunay(packing, boundary_loops(packing, *domain.planar));

@@ -37,10 +37,9 @@ int run_planar_report(const ReportArgs& args, const CommandDomain& domain) {
     throw InvalidInput("--png-dir: the PNG pictures (spectrum, histograms) are made for the "
                        "periodic box only; use --json and --svg for a planar domain");
   }
-  const double r = args.domain.radius;
-  Packing packing = domain.read(args.input, r, false);
+  Packing packing = domain.read(args.input, false);
   const PlanarMesh mesh = constrained_delaunay(packing, boundary_loops(packing, *domain.planar));
-  const PlanarQualityReport q = measure_planar_quality(packing, mesh, r, domain.area());
+  const PlanarQualityReport q = measure_planar_quality(packing, mesh, domain.area());
   if (!args.json.empty()) write_quality_json(args.json, q);
   if (!args.svg.empty()) write_mesh_svg(args.svg, mesh, packing);
   std::printf(
@@ -62,7 +61,11 @@ int run_report(const ReportArgs& args) {
   if (!args.png_dir.empty()) check_picture_folder(args.png_dir);
   const CommandDomain domain = open_domain(args.domain);
   if (domain.planar) return run_planar_report(args, domain);
-  const Packing packing = domain.read(args.input, args.domain.radius, false);
+  if (domain.sizing) {
+    throw InvalidInput("report: the periodic box's report is for one radius; give --radius (varying "
+                       "radii are reported in planar domains)");
+  }
+  const Packing packing = domain.read(args.input, false);
   std::optional<Spectrum> spectrum;
   if (!args.no_spectrum) {
     const auto start = std::chrono::steady_clock::now();

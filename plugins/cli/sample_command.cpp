@@ -17,17 +17,14 @@ int run_sample(const SampleJob& job) {
   check_output_folder(job.output);
   check_output_folder(job.svg);
   const CommandDomain domain = open_domain(job.domain);
-  const double r = job.domain.radius;
-  domain.validate_radius(r);
   Rng rng(job.seed);
   const auto t0 = std::chrono::steady_clock::now();
-  const Packing packing = domain.sample(r, rng);
+  const Packing packing = domain.sample(rng);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (!job.output.empty()) write_points_csv(job.output, packing);
   if (!job.svg.empty()) write_packing_svg(job.svg, packing);
-  std::printf("sample: %zu disks, eta = %.4f, rho = %.4f, %.3f s (r = %g, %s)%s%s\n",
-              packing.size(), area_fraction(packing.size(), r, domain.area()),
-              relative_radius(packing.size(), r, domain.area()), seconds, r,
+  std::printf("sample: %zu disks, %s, %.3f s (%s, %s)%s%s\n", packing.size(),
+              domain.density_text(packing.size()).c_str(), seconds, domain.radius_text().c_str(),
               domain.describe().c_str(), job.output.empty() ? "" : " -> ", job.output.c_str());
   return kExitOk;
 }
@@ -50,8 +47,12 @@ void add_domain_options(CLI::App* cmd, DomainArgs& domain) {
   cmd->add_option("--height", domain.height, "Height H of the periodic box")->capture_default_str();
   cmd->add_option("--radius,-r", domain.radius,
                   "Conflict radius r: no center closer than r to another; every point within r "
-                  "of a center. Needs 0 < r < min(W,H)/2")
-      ->required();
+                  "of a center. In the box 0 < r < min(W,H)/2")
+      ->each([&domain](const std::string&) { domain.has_radius = true; });
+  cmd->add_option("--sizing", domain.sizing,
+                  "Radii that vary over the domain, instead of --radius: a number, an expression "
+                  "in x and y (e.g. '0.005 + 0.01*x'), a grid file, or boundary:RMIN,RMAX,G "
+                  "(r grows with the distance to a planar domain's boundary); docs/sizing.md");
 }
 
 void add_sample_command(CLI::App& app, Action& action) {

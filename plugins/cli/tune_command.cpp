@@ -44,12 +44,10 @@ int run_tune(const TuneJob& job) {
   check_output_folder(job.output);
   check_output_folder(job.svg);
   const CommandDomain domain = open_domain(job.domain);
-  const double r = job.domain.radius;
-  domain.validate_radius(r);
-  const std::size_t target = target_count(job.target, r, domain.area());  // fail early
+  const std::size_t target = target_count(job.target, domain.empty_packing(), domain.area());  // fail early
   Rng rng(job.seed);
   const auto t0 = std::chrono::steady_clock::now();
-  Packing packing = job.input.empty() ? domain.sample(r, rng) : domain.read(job.input, r, true);
+  Packing packing = job.input.empty() ? domain.sample(rng) : domain.read(job.input, true);
   const std::size_t start = packing.size();
 
   ProgressBar bar;
@@ -67,16 +65,15 @@ int run_tune(const TuneJob& job) {
 
   if (!job.output.empty()) write_points_csv(job.output, packing);
   if (!job.svg.empty()) write_packing_svg(job.svg, packing);
-  std::printf("tune: %zu -> %zu disks (target %zu%s), eta = %.4f, rho = %.4f, phase %s, %.3f s%s%s\n",
-              start, res.count, res.target, res.reached ? ", reached" : ", NOT reached",
-              area_fraction(res.count, r, domain.area()),
-              relative_radius(res.count, r, domain.area()), to_string(res.last_phase).c_str(),
-              seconds, job.output.empty() ? "" : " -> ", job.output.c_str());
+  std::printf("tune: %zu -> %zu disks (target %zu%s), %s, phase %s, %.3f s%s%s\n", start,
+              res.count, res.target, res.reached ? ", reached" : ", NOT reached",
+              domain.density_text(res.count).c_str(), to_string(res.last_phase).c_str(), seconds,
+              job.output.empty() ? "" : " -> ", job.output.c_str());
   if (!res.reached) {
     std::fprintf(stderr,
                  "disktune: the target was not reached: no phase makes progress beyond %zu disks "
-                 "(eta %.4f); the closest packing was written\n",
-                 res.count, area_fraction(res.count, r, domain.area()));
+                 "(%s); the closest packing was written\n",
+                 res.count, domain.density_text(res.count).c_str());
     return kExitNotReached;
   }
   return kExitOk;

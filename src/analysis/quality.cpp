@@ -10,6 +10,7 @@
 #include "disktune/density.h"
 #include "disktune/errors.h"
 #include "disktune/tolerance.h"
+#include "disktune/tuning.h"
 #include "disktune/voids.h"
 
 namespace disktune {
@@ -110,11 +111,14 @@ void check_uniform_radius(const Packing& packing, double r) {
   }
 }
 
-/// No two centers closer than r: every pair within r, through the packing's grid.
-bool is_conflict_free(const Packing& packing, double r) {
+/// No pair of disks covers each other's centers: every pair closer than the smaller
+/// radius (r, for one radius), through the packing's grid.
+bool is_conflict_free(const Packing& packing) {
   for (const DiskId id : packing.ids()) {
-    if (packing.any_near(packing.center(id), r,
-                         [&](const Neighbor& n) { return n.id != id && is_conflict(n.d2, r); })) {
+    const double r = packing.radius(id);
+    if (packing.any_near(packing.center(id), r, [&](const Neighbor& n) {
+          return n.id != id && is_conflict(n.d2, std::min(r, n.radius));
+        })) {
       return false;
     }
   }
@@ -153,6 +157,10 @@ QualityReport::Angles measure_angles(const std::vector<Vec2>& vertices,
 }
 
 PlanarMeshQuality measure_planar_mesh(const PlanarMesh& mesh, double r) {
+  return measure_planar_mesh(mesh, std::vector<double>(mesh.vertices.size(), r));
+}
+
+PlanarMeshQuality measure_planar_mesh(const PlanarMesh& mesh, const std::vector<double>& vertex_radius) {
   PlanarMeshQuality q;
   q.vertex_count = mesh.vertices.size();
   q.triangle_count = mesh.triangles.size();
@@ -172,7 +180,7 @@ PlanarMeshQuality measure_planar_mesh(const PlanarMesh& mesh, double r) {
   std::vector<double> lengths_over_r;
   for (const auto& [e, uses] : edge_uses) {
     const double len = distance(mesh.vertices[e.first], mesh.vertices[e.second]);
-    lengths_over_r.push_back(len / r);
+    lengths_over_r.push_back(2 * len / (vertex_radius[e.first] + vertex_radius[e.second]));
     for (const std::uint32_t v : {e.first, e.second}) {
       nearest[v] = std::min(nearest[v], len);
       if (uses == 1) on_boundary[v] = true;
@@ -202,7 +210,7 @@ QualityReport measure_quality(const Packing& packing, const TriangleMesh& mesh, 
 
   // Exact checks through the packing itself, apart from the mesh.
   q.maximal = is_maximal(packing);
-  q.conflict_free = is_conflict_free(packing, r);
+  q.conflict_free = is_conflict_free(packing);
 
   // Per disk: Voronoi outradius (largest circumradius around it), nearest-neighbour
   // distance (shortest incident edge) and cell area.
@@ -257,28 +265,28 @@ QualityReport measure_quality(const Packing& packing, const TriangleMesh& mesh, 
   return q;
 }
 
-PlanarQualityReport measure_planar_quality(const Packing& packing, const PlanarMesh& mesh, double r,
-                                           double area) {
+PlanarQualityReport measure_planar_quality(const Packing& packing, const PlanarMesh& mesh, double area) {
   if (packing.empty()) throw InvalidInput("cannot measure an empty packing: it has no disks");
-  check_uniform_radius(packing, r);
   PlanarQualityReport q;
-  q.radius = r;
+  q.radius = packing.sizing() ? 0 : packing.max_radius();
   q.area = area;
   q.count = packing.size();
-  q.area_fraction = area_fraction(q.count, r, area);
-  q.relative_radius = relative_radius(q.count, r, area);
+  q.area_fraction = static_cast<double>(q.count) / density_unit(packing, area);
+  q.relative_radius = std::sqrt(q.area_fraction * 2 * std::sqrt(3.0) / 3.14159265358979323846);
   q.maximal = is_maximal(packing);
-  q.conflict_free = is_conflict_free(packing, r);
+  q.conflict_free = is_conflict_free(packing);
   // The nearest pair need not be a mesh edge (a constraint may cut it): ask the grid.
-  double nearest2 = kInf;
+  q.min_distance_over_r = kInf;
   for (const DiskId id : packing.ids()) {
     if (packing.flags(id) & kFixed) ++q.boundary_count;
-    packing.for_each_near(packing.center(id), 2 * r, [&](const Neighbor& n) {
-      if (n.id != id) nearest2 = std::min(nearest2, n.d2);
+    const double r = packing.radius(id);
+    packing.for_each_near(packing.center(id), 2 * packing.max_radius(), [&](const Neighbor& n) {
+      if (n.id != id) q.min_distance_over_r = std::min(q.min_distance_over_r, std::sqrt(n.d2) / std::min(r, n.radius));
     });
   }
-  q.min_distance_over_r = std::sqrt(nearest2) / r;
-  q.all = measure_planar_mesh(mesh, r);
+  std::vector<double> vertex_radius;
+  for (const DiskId d : mesh.vertex_disk) vertex_radius.push_back(d == kNoDisk ? 0 : packing.radius(d));
+  q.all = measure_planar_mesh(mesh, vertex_radius);
   PlanarMesh interior{mesh.vertices, mesh.vertex_disk, {}}, boundary = interior;
   for (const auto& t : mesh.triangles) {
     const bool on_boundary = std::any_of(t.begin(), t.end(), [&](std::uint32_t v) {
@@ -286,8 +294,8 @@ PlanarQualityReport measure_planar_quality(const Packing& packing, const PlanarM
     });
     (on_boundary ? boundary : interior).triangles.push_back(t);
   }
-  if (!interior.triangles.empty()) q.interior = measure_planar_mesh(interior, r);
-  if (!boundary.triangles.empty()) q.boundary = measure_planar_mesh(boundary, r);
+  if (!interior.triangles.empty()) q.interior = measure_planar_mesh(interior, vertex_radius);
+  if (!boundary.triangles.empty()) q.boundary = measure_planar_mesh(boundary, vertex_radius);
   return q;
 }
 

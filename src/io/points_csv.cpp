@@ -81,54 +81,52 @@ std::vector<PointRecord> read_points_csv(const std::string& path) {
   return out;
 }
 
-namespace {
-
-// Reads the CSV into `packing` (frame and radius set), checking each line's radius and,
-// through `outside`, its center: `outside` returns what is wrong, or "" when nothing is.
-template <class Outside>
-void read_disks(const std::string& path, double r, Packing& packing, Outside&& outside) {
+void read_packing_csv(const std::string& path, Packing& packing) {
   const std::vector<PointRecord> records = read_points_csv(path);
   if (records.empty()) throw InvalidInput("'" + path + "' holds no disks, only a header");
+  const Frame& f = packing.frame();
   for (std::size_t k = 0; k < records.size(); ++k) {
     const PointRecord& p = records[k];
+    const Vec2 c{p.x, p.y};
     std::ostringstream where;
     where << path << ":" << k + 2 << ": ";  // line 1 is the header
-    if (const std::string why = outside(Vec2{p.x, p.y}); !why.empty()) {
-      where << "center (" << p.x << ", " << p.y << ") " << why;
+    if (packing.domain() ? !packing.domain()->contains(c)
+                         : !(c.x >= f.origin.x && c.x < f.origin.x + f.extent.x &&
+                             c.y >= f.origin.y && c.y < f.origin.y + f.extent.y)) {
+      where << "center (" << p.x << ", " << p.y << ") lies outside the ";
+      if (packing.domain()) {
+        where << "domain; give the domain the packing was made for";
+      } else {
+        where << f.extent.x << " x " << f.extent.y << " box; give the box with --width and --height";
+      }
       throw InvalidInput(where.str());
     }
+    const double r = packing.radius_at(c);
     if (std::abs(p.r - r) > kRelTol * r) {
-      where << "radius " << p.r << " differs from the radius " << r
-            << " asked for; disktune tunes uniform-radius packings: pass --radius " << p.r;
+      where << "radius " << p.r << " differs from the radius " << r << " asked for at its center";
+      if (packing.sizing()) {
+        where << " by the sizing " << packing.sizing()->description() << "; give the sizing it was made with";
+      } else {
+        where << "; disktune tunes uniform-radius packings: pass --radius " << p.r;
+      }
       throw InvalidInput(where.str());
     }
-    packing.insert({p.x, p.y}, r);
+    packing.insert(c, r);
   }
 }
-
-}  // namespace
 
 Packing read_packing_csv(const std::string& path, const PeriodicBox& box, double r) {
   box.validate_radius(r);
   Packing packing(box.frame(), r);
-  read_disks(path, r, packing, [&](Vec2 c) {
-    if (c.x >= 0 && c.x < box.width() && c.y >= 0 && c.y < box.height()) return std::string();
-    std::ostringstream why;
-    why << "lies outside the " << box.width() << " x " << box.height()
-        << " box; give the box with --width and --height";
-    return why.str();
-  });
+  read_packing_csv(path, packing);
   return packing;
 }
 
 Packing read_packing_csv(const std::string& path, std::shared_ptr<const PlanarDomain> domain, double r) {
   domain->validate_radius(r);
   Packing packing(domain->frame(), r);
-  packing.set_domain(domain);
-  read_disks(path, r, packing, [&](Vec2 c) {
-    return domain->contains(c) ? std::string()
-                               : std::string("lies outside the domain; give the domain the packing was made for");
-  });
+  packing.set_domain(std::move(domain));
+  read_packing_csv(path, packing);
   return packing;
 }
 

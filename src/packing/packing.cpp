@@ -3,6 +3,9 @@
 
 #include <cassert>
 #include <cmath>
+#include <sstream>
+
+#include "disktune/errors.h"
 
 namespace disktune {
 
@@ -42,10 +45,23 @@ void Packing::remove(DiskId id) {
 
 void Packing::move(DiskId id, Vec2 center) {
   assert(alive(id));
+  if (sizing_) radius_[id] = radius_at(center);
   center = frame().wrap(center);
   grid_.remove(id, center_[id]);
   center_[id] = center;
   grid_.insert(id, center, radius_[id]);
+}
+
+double Packing::sized_radius(Vec2 q) const {
+  const Vec2 x = frame().wrap(q);
+  const double r = (*sizing_)(x);
+  if (!(r > 0 && r <= max_radius_)) {
+    std::ostringstream msg;
+    msg << "the sizing " << sizing_->description() << " gives r = " << r << " at (" << x.x << ", "
+        << x.y << "), outside (0, " << max_radius_ << "], the range it was sampled in";
+    throw InvalidInput(msg.str());
+  }
+  return r;
 }
 
 std::vector<DiskId> Packing::ids() const {

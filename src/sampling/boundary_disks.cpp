@@ -11,7 +11,7 @@
 
 namespace disktune {
 
-void fill_boundary_voids(Packing& packing, const PlanarDomain& domain, double r, Rng& rng) {
+void fill_boundary_voids(Packing& packing, const PlanarDomain& domain, Rng& rng) {
   std::vector<BoundarySegment> segments = domain.segments();
   for (std::size_t i = segments.size(); i > 1; --i) {
     std::swap(segments[i - 1], segments[uniform_index(rng, i)]);
@@ -31,7 +31,9 @@ void fill_boundary_voids(Packing& packing, const PlanarDomain& domain, double r,
         }
         u -= g[1] - g[0];
       }
-      packing.insert(s.a + (s.b - s.a) * t, r, kFixed);
+      const Vec2 x = s.a + (s.b - s.a) * t;
+      const double r = packing.radius_at(x);
+      packing.insert(x, r, kFixed);
       // The new disk covers [t - r, t + r] of this segment (in parameter units).
       const double half = r * (1 + kRelTol) / len;
       std::vector<std::array<double, 2>> left;
@@ -44,12 +46,25 @@ void fill_boundary_voids(Packing& packing, const PlanarDomain& domain, double r,
   }
 }
 
-void sample_boundary(Packing& packing, const PlanarDomain& domain, double r, Rng& rng) {
-  domain.validate_radius(r);  // corners are at least r apart
+void sample_boundary(Packing& packing, const PlanarDomain& domain, Rng& rng) {
+  // A disk on every corner; with one radius validate_radius has checked they are r
+  // apart, with a sizing no corner may lie in another corner's disk.
   for (const auto& loop : domain.loops()) {
-    for (const Vec2 corner : loop) packing.insert(corner, r, kFixed);
+    for (const Vec2 corner : loop) {
+      const double r = packing.radius_at(corner);
+      packing.for_each_near(corner, packing.max_radius(), [&](const Neighbor& n) {
+        if (is_conflict(n.d2, std::max(r, n.radius))) {
+          std::ostringstream msg;
+          msg << "the domain's corners (" << corner.x << ", " << corner.y << ") and (" << n.image.x
+              << ", " << n.image.y << ") are " << std::sqrt(n.d2) << " apart, closer than their "
+              << "radii " << r << " and " << n.radius << ": each corner holds a disk; use smaller radii there";
+          throw InvalidInput(msg.str());
+        }
+      });
+      packing.insert(corner, r, kFixed);
+    }
   }
-  fill_boundary_voids(packing, domain, r, rng);
+  fill_boundary_voids(packing, domain, rng);
 }
 
 BoundaryLoops boundary_loops(Packing& packing, const PlanarDomain& domain) {

@@ -12,22 +12,23 @@
 namespace disktune {
 namespace {
 
-// How far along q + t v (t in [0, 1]) the disk at q can go: it must keep every corner
-// of its void within r (an interval of t around 0 per corner), and must not enter a
-// disk other than p's and its own (the first entry bounds t).
+// How far along q + t v (t in [0, 1]) the disk at q can go, keeping its radius: it must
+// keep every corner of its void within its radius (an interval of t around 0 per
+// corner), and its center must not enter a disk other than p's and its own (the first
+// entry bounds t).
 double reach_toward(const Packing& packing, DiskId p, const Neighbor& q, Vec2 v,
-                    const std::vector<Corner>& corners, double r) {
-  const double a = squared_norm(v);
+                    const std::vector<Corner>& corners) {
+  const double a = squared_norm(v), r = q.radius;
   double t = 1.0;
   for (const Corner& c : corners) {
     const Vec2 w = q.image - c.point;
     const double b = dot(v, w), c0 = std::min(squared_norm(w) - r * r, 0.0);
     t = std::min(t, (-b + std::sqrt(b * b - a * c0)) / a);
   }
-  packing.for_each_near(q.image, std::sqrt(a) + r, [&](const Neighbor& k) {
+  packing.for_each_near(q.image, std::sqrt(a) + packing.max_radius(), [&](const Neighbor& k) {
     if (k.id == p || k.id == q.id) return;
     const Vec2 w = q.image - k.image;
-    const double b = dot(v, w), c0 = squared_norm(w) - r * r, disc = b * b - a * c0;
+    const double b = dot(v, w), c0 = squared_norm(w) - k.radius * k.radius, disc = b * b - a * c0;
     if (disc <= 0 || b >= 0) return;  // the line misses the disk, or leads away from it
     t = std::min(t, std::max((-b - std::sqrt(disc)) / a, 0.0));
   });
@@ -48,11 +49,20 @@ std::size_t attractor_eject(UndoLog& log, Packing& packing, DiskId p, Rng& rng, 
   std::vector<Corner> corners;
   for (const Neighbor& q : near) {
     corners.clear();
-    corners_in_region(packing, q.image, r, {q.id}, corners);
+    corners_in_region(packing, q.image, q.radius, {q.id}, corners);
     const Vec2 v = pc - q.image;
-    const double t = reach_toward(packing, p, q, v, corners, r);
-    // Still covers its void: no repair. (A non-convex domain may not hold the target.)
-    if (t > 0 && packing.inside(q.image + v * t)) log.move(q.id, q.image + v * t);
+    double t = reach_toward(packing, p, q, v, corners);
+    // With varying radii q's radius changes on the way: where it no longer covers its
+    // void, try 0.9 of the step, three times at most (6.2). Any shorter step still
+    // keeps q out of the other disks. (A non-convex domain may not hold the target.)
+    for (int tries = 0; tries < 3 && t > 0; ++tries, t *= 0.9) {
+      const Vec2 to = q.image + v * t;
+      if (packing.inside(to) && covers_all(to, packing.radius_at(to), corners)) {
+        log.move(q.id, to);  // still covers its void: no repair
+        break;
+      }
+      if (!packing.sizing()) break;
+    }
   }
   corners.clear();
   corners_in_region(packing, pc, r, {p}, corners);
@@ -68,10 +78,12 @@ std::size_t attractor_eject(UndoLog& log, Packing& packing, DiskId p, Rng& rng, 
   for (const Corner& c : corners) points.push_back(c.point);
   const Circle mec = min_enclosing_circle(points);
   Vec2 z = mec.center;
-  packing.for_each_near(z, r, [&](const Neighbor& k) {
-    if (k.id != p && is_conflict(k.d2, r) && k.d2 > 0) z = k.image + (z - k.image) * (r / std::sqrt(k.d2));
+  packing.for_each_near(z, packing.max_radius(), [&](const Neighbor& k) {
+    if (k.id != p && is_conflict(k.d2, k.radius) && k.d2 > 0) {
+      z = k.image + (z - k.image) * (k.radius / std::sqrt(k.d2));
+    }
   });
-  if (mec.radius > r || !covers_all(z, r, corners) || packing.conflicts(z, p)) {
+  if (packing.conflicts(z, p) || !covers_all(z, packing.radius_at(z), corners)) {
     log.revert_to(mark);  // no place for p: everything back
     return 0;
   }

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "disktune/errors.h"
 #include "disktune/tuning.h"
 #include "void_repair.h"
 
@@ -224,13 +225,26 @@ class Crystal {
 
 }  // namespace
 
+namespace {
+// The lattice has one spacing: the paper has no crystal growth for varying radii.
+void require_one_radius(const Packing& packing) {
+  if (packing.sizing()) {
+    throw InvalidInput("crystal growth needs one radius (a hexagonal lattice has one spacing); "
+                       "with a sizing function use void or repeller injection, sifting or "
+                       "attractor ejection");
+  }
+}
+}  // namespace
+
 std::size_t crystal_inject(Packing& packing, Rng& rng, std::size_t max_added,
                            const std::function<void()>& after_step) {
+  require_one_radius(packing);
   return Crystal(packing, rng, true).grow(max_added, after_step);
 }
 
 std::size_t crystal_eject(Packing& packing, Rng& rng, std::size_t max_removed,
                           const std::function<void()>& after_step) {
+  require_one_radius(packing);
   return Crystal(packing, rng, false).grow(max_removed, after_step);
 }
 

@@ -10,21 +10,21 @@
 namespace disktune {
 
 std::size_t repel_from(Packing& packing, Vec2 point, DiskId self, Rng& rng, std::size_t max_added) {
-  const double r = packing.max_radius();
   // The disks overlapping a disk at `point`, seen in its frame (one image each).
   const std::vector<Neighbor> near = detail::mobile_neighbors(packing, point, self, rng);
-
   std::vector<Corner> corners;
   for (const Neighbor& q : near) {
+    const double r = q.radius;  // the region q leaves
     corners.clear();
     corners_in_region(packing, q.image, r, {q.id}, corners);
     if (corners.empty()) continue;
-    const auto far = std::max_element(corners.begin(), corners.end(), [&](const Corner& a, const Corner& b) {
-      return squared_distance(a.point, point) < squared_distance(b.point, point);
-    });
+    // The corner of largest weighted distance w(c, point) = |c - point| - r(c) (6.1.2).
+    auto w = [&](const Corner& c) { return distance(c.point, point) - packing.radius_at(c.point); };
+    const auto far = std::max_element(corners.begin(), corners.end(),
+                                      [&](const Corner& a, const Corner& b) { return w(a) < w(b); });
     detail::UndoLog log(packing);
     log.move(q.id, far->point);
-    if (detail::covers_all(far->point, r, corners)) continue;  // no gap opened
+    if (detail::covers_all(far->point, packing.radius(q.id), corners)) continue;  // no gap opened
     const std::size_t added = detail::repair_void(log, packing, q.image, r, rng, max_added);
     if (added > max_added) {
       log.revert();

@@ -24,11 +24,12 @@ struct PhasePlan {
   Operation op;  // one of op and sweep
   Sweep sweep;
   double until;  // area fraction at which the automatic schedule moves on (>= 1: never)
+  bool thaw = false;  // unfreeze the crystal first, so its disks can move again
 };
 
 // The phases for a method, in order. Injection phases move on at their area fraction
 // (automatic schedule) or when they stall; ejection phases when they stall.
-std::vector<PhasePlan> plan_for(const TuneOptions& o, bool eject) {
+std::vector<PhasePlan> plan_for(const TuneOptions& o, bool eject, bool one_radius) {
   const PhasePlan void_phase{Phase::void_injection, &void_inject, nullptr, o.void_until};
   const PhasePlan repeller_phase{Phase::repeller_injection, &repeller_inject, nullptr, o.repeller_until};
   const PhasePlan crystal_phase{Phase::crystal_injection, nullptr, &crystal_inject, 2.0};
@@ -37,6 +38,11 @@ std::vector<PhasePlan> plan_for(const TuneOptions& o, bool eject) {
   const PhasePlan attractor_phase{Phase::attractor_ejection, &attractor_eject, nullptr, 2.0};
   const PhasePlan crystal_eject_phase{Phase::crystal_ejection, nullptr, &crystal_eject, 2.0};
   auto alone = [](PhasePlan p) { return p.until = 2.0, std::vector<PhasePlan>{p}; };
+  // Crystal steps near the exact target can all overshoot (the voids a step refills need
+  // more disks than are left to add); repeller injection then adds the last few.
+  PhasePlan finish = repeller_phase;
+  finish.until = 2.0;
+  finish.thaw = true;
   const bool ejects = o.method == Method::sift_ejection || o.method == Method::attractor_ejection ||
                       o.method == Method::crystal_ejection;
   if (o.method != Method::automatic && ejects != eject) {
@@ -46,12 +52,14 @@ std::vector<PhasePlan> plan_for(const TuneOptions& o, bool eject) {
                                "disks; use an injection method (or automatic)");
   }
   switch (o.method) {
-    case Method::automatic:
-      if (eject) return {sift_phase, attractor_phase, crystal_eject_phase};
-      return {void_phase, repeller_phase, crystal_phase};
+    case Method::automatic:  // no crystal growth for varying radii (paper, 6)
+      if (eject) return one_radius ? std::vector<PhasePlan>{sift_phase, attractor_phase, crystal_eject_phase}
+                                   : std::vector<PhasePlan>{sift_phase, attractor_phase};
+      return one_radius ? std::vector<PhasePlan>{void_phase, repeller_phase, crystal_phase, finish}
+                        : std::vector<PhasePlan>{void_phase, repeller_phase};
     case Method::void_injection: return alone(void_phase);
     case Method::repeller_injection: return alone(repeller_phase);
-    case Method::crystal_injection: return alone(crystal_phase);
+    case Method::crystal_injection: return {crystal_phase, finish};
     case Method::angle_injection: return alone(angle_phase);
     case Method::sift_ejection: return alone(sift_phase);
     case Method::attractor_ejection: return alone(attractor_phase);
@@ -63,15 +71,15 @@ std::vector<PhasePlan> plan_for(const TuneOptions& o, bool eject) {
 // The scheduler for a domain of the given area.
 TuneResult tune_in(Packing& packing, double area, const Target& target, Rng& rng,
                    const TuneOptions& options, std::chrono::steady_clock::time_point t0) {
-  const double r = packing.max_radius();
   TuneResult result;
-  result.target = target_count(target, r, area);
+  const double unit = density_unit(packing, area);
+  result.target = target_count(target, packing, area);
   const bool eject = result.target < packing.size();
   // Disks still to add or remove: what each operation may change at most.
   auto missing = [&] {
     return eject ? packing.size() - result.target : result.target - packing.size();
   };
-  auto eta = [&] { return area_fraction(packing.size(), r, area); };
+  auto eta = [&] { return static_cast<double>(packing.size()) / unit; };
   auto report = [&](Phase phase) {
     if (options.on_progress) options.on_progress({packing.size(), eta(), phase});
   };
@@ -98,9 +106,12 @@ TuneResult tune_in(Packing& packing, double area, const Target& target, Rng& rng
     }
   };
 
-  for (const PhasePlan& plan : plan_for(options, eject)) {
+  for (const PhasePlan& plan : plan_for(options, eject, packing.sizing() == nullptr)) {
     if (missing() == 0) break;
     result.last_phase = plan.phase;
+    if (plan.thaw) {
+      for (const DiskId id : packing.ids()) packing.set_flags(id, packing.flags(id) & ~kFrozen);
+    }
     for (int k = 0; k < options.max_sweeps_per_phase; ++k) {
       if (missing() == 0 || (!eject && eta() >= plan.until)) break;
       const std::size_t before = packing.size();
@@ -137,10 +148,11 @@ TuneResult tune(Packing& packing, const PlanarDomain& domain, const Target& targ
     throw InvalidInput("tune: angle injection triangulates the periodic box; in a planar domain "
                        "use void, repeller or crystal injection");
   }
-  // The boundary first, at the spacing of a hexagonal packing of the target's count.
-  const double r = packing.max_radius();
-  const auto n = static_cast<double>(target_count(target, r, domain.area()));
-  tune_boundary(packing, domain, std::sqrt(2 * domain.area() / (std::sqrt(3.0) * n)), rng);
+  // The boundary first, at the spacing of a hexagonal packing of the target's count:
+  // r / rho, rho = sqrt(eta 2 sqrt3 / pi) the target's relative radius.
+  const double eta = static_cast<double>(target_count(target, packing, domain.area())) /
+                     density_unit(packing, domain.area());
+  tune_boundary(packing, domain, 1 / std::sqrt(eta * 2 * std::sqrt(3.0) / 3.14159265358979323846), rng);
   return tune_in(packing, domain.area(), target, rng, options, t0);
 }
 

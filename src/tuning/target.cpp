@@ -4,11 +4,19 @@
 
 #include "disktune/density.h"
 #include "disktune/errors.h"
+#include "disktune/sizing.h"
 #include "disktune/tuning.h"
 
 namespace disktune {
 
-std::size_t target_count(const Target& target, double r, double area) {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kHexFraction = 0.9069;  // pi / (2 sqrt 3), rounded down
+
+// `unit` is the count at area fraction 1: A / (pi r^2 / 4) for one radius, the integral
+// of 4 / (pi r(x)^2) over the domain with a sizing.
+std::size_t count_for(const Target& target, double unit) {
   const double v = target.value;
   auto refuse = [&](const std::string& why) {
     std::ostringstream msg;
@@ -16,30 +24,45 @@ std::size_t target_count(const Target& target, double r, double area) {
     throw InvalidInput(msg.str());
   };
   if (!(std::isfinite(v) && v > 0)) refuse("must be a finite positive number");
-  std::size_t n = 0;
+  double n = 0;
   switch (target.kind) {
     case Target::Kind::count:
       if (v != std::floor(v)) refuse("a disk count must be a whole number");
-      n = static_cast<std::size_t>(v);
+      n = v;
       break;
     case Target::Kind::area_fraction:
-      if (v >= 0.9069) refuse("area fraction must be below the hexagonal packing's pi/(2 sqrt 3) = 0.9069");
-      n = count_for_area_fraction(v, r, area);
+      if (v >= kHexFraction) refuse("area fraction must be below the hexagonal packing's pi/(2 sqrt 3) = 0.9069");
+      n = std::round(v * unit);
       break;
-    case Target::Kind::relative_radius:
+    case Target::Kind::relative_radius:  // eta = pi / (2 sqrt 3) rho^2
       if (v >= 1) refuse("relative radius must be below 1 (the hexagonal packing)");
-      n = count_for_relative_radius(v, r, area);
+      n = std::round(kPi / (2 * std::sqrt(3.0)) * v * v * unit);
       break;
   }
   // No packing of r-separated centers beats the hexagonal density.
-  const double densest = 2 * area / (std::sqrt(3.0) * r * r);
-  if (static_cast<double>(n) > densest) {
+  const double densest = kPi / (2 * std::sqrt(3.0)) * unit;
+  if (n > densest) {
     std::ostringstream msg;
     msg << "more disks than the densest packing holds (" << static_cast<std::size_t>(densest) << ")";
     refuse(msg.str());
   }
-  if (n == 0) refuse("means zero disks");
-  return n;
+  if (n < 1) refuse("means zero disks");
+  return static_cast<std::size_t>(n);
+}
+
+}  // namespace
+
+std::size_t target_count(const Target& target, double r, double area) {
+  return count_for(target, 4 * area / (kPi * r * r));
+}
+
+double density_unit(const Packing& packing, double area) {
+  if (!packing.sizing()) return 4 * area / (kPi * packing.max_radius() * packing.max_radius());
+  return density_integral(*packing.sizing(), packing.frame(), packing.domain());
+}
+
+std::size_t target_count(const Target& target, const Packing& packing, double area) {
+  return count_for(target, density_unit(packing, area));
 }
 
 std::string to_string(Phase phase) {

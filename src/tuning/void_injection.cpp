@@ -1,21 +1,30 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Void injection (paper, 2.1) and the void repair it shares with the other operations.
+#include <algorithm>
+#include <cmath>
+
 #include "disktune/tuning.h"
 #include "void_repair.h"
 
 namespace disktune {
 namespace detail {
 
-std::pair<std::size_t, std::size_t> diameter_pair(const std::vector<Corner>& corners) {
-  std::pair<std::size_t, std::size_t> best{0, 0};
-  double best_d2 = -1;
+Vec2 void_corner(const Packing& packing, const std::vector<Corner>& corners, Rng& rng) {
+  std::vector<double> weighted(corners.size(), 0);
+  double best = -1e300;
   for (std::size_t i = 0; i < corners.size(); ++i) {
-    for (std::size_t j = i + 1; j < corners.size(); ++j) {
-      const double d2 = squared_distance(corners[i].point, corners[j].point);
-      if (d2 > best_d2) best_d2 = d2, best = {i, j};
-    }
+    double far2 = 0;
+    for (const Corner& c : corners) far2 = std::max(far2, squared_distance(corners[i].point, c.point));
+    weighted[i] = std::sqrt(far2) - packing.radius_at(corners[i].point);
+    best = std::max(best, weighted[i]);
   }
-  return best;
+  // Equal up to rounding: the two ends of a diameter pair under one radius.
+  const double tie = 1e-12 * packing.max_radius();
+  std::vector<std::size_t> top;
+  for (std::size_t i = 0; i < corners.size(); ++i) {
+    if (weighted[i] >= best - tie) top.push_back(i);
+  }
+  return corners[top[uniform_index(rng, top.size())]].point;
 }
 
 bool covers_all(Vec2 c, double r, const std::vector<Corner>& corners) {
@@ -40,17 +49,10 @@ std::vector<Neighbor> mobile_neighbors(const Packing& packing, Vec2 point, DiskI
 
 bool void_free_near(const Packing& packing, Vec2 center, double r) {
   std::vector<Corner> corners;
-  return !packing.any_near(center, 2 * r * (1 + kRelTol), [&](const Neighbor& n) {
+  return !packing.any_near(center, (r + packing.max_radius()) * (1 + kRelTol), [&](const Neighbor& n) {
     corners_on_circle(packing, n.id, corners);
     return !corners.empty();
   });
-}
-
-// One end of the diameter pair, chosen at random: a fixed choice would add a
-// direction bias to every injected disk.
-static Vec2 diameter_corner(const std::vector<Corner>& corners, Rng& rng) {
-  const auto [i, j] = diameter_pair(corners);
-  return corners[(rng() & 1) ? i : j].point;
 }
 
 std::size_t repair_void(UndoLog& log, const Packing& packing, Vec2 center, double r, Rng& rng,
@@ -61,7 +63,8 @@ std::size_t repair_void(UndoLog& log, const Packing& packing, Vec2 center, doubl
     corners_in_region(packing, center, r, {}, corners);
     if (corners.empty()) return added;
     if (added == max_added) return max_added + 1;
-    log.insert(diameter_corner(corners, rng), r);
+    const Vec2 at = void_corner(packing, corners, rng);
+    log.insert(at, packing.radius_at(at));
   }
 }
 
@@ -75,9 +78,10 @@ std::size_t void_inject(Packing& packing, DiskId p, Rng& rng, std::size_t max_ad
   corners_in_region(packing, c, r, {p}, corners);
   if (corners.empty()) return 0;  // no room: p's void is a point
   detail::UndoLog log(packing);
-  const Vec2 to = detail::diameter_corner(corners, rng);
+  const Vec2 to = detail::void_corner(packing, corners, rng);
   log.move(p, to);
-  if (detail::covers_all(to, r, corners)) return 0;  // diameter below r: the void is covered
+  // Weighted diameter below 0: p covers its whole void from there, nothing to inject.
+  if (detail::covers_all(to, packing.radius(p), corners)) return 0;
   const std::size_t added = detail::repair_void(log, packing, c, r, rng, max_added);
   if (added > max_added) {
     log.revert();

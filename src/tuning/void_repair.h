@@ -3,7 +3,6 @@
 #pragma once
 
 #include <cstddef>
-#include <utility>
 #include <vector>
 
 #include "disktune/random.h"
@@ -12,8 +11,11 @@
 
 namespace disktune::detail {
 
-/// Indices of the two corners farthest apart (i == j when there is one corner).
-std::pair<std::size_t, std::size_t> diameter_pair(const std::vector<Corner>& corners);
+/// The corner a new disk goes to (paper 2.1 and 6.1.1): the one of largest weighted
+/// diameter max_j |c - c_j| - r(c), r from the packing's sizing; for one radius, an end
+/// of the diameter pair. Ties (both ends, for one radius) are broken at random: a fixed
+/// choice would add a direction bias to every injected disk.
+Vec2 void_corner(const Packing& packing, const std::vector<Corner>& corners, Rng& rng);
 
 /// The disks that can move (not fixed, not frozen) whose centers lie within 2r of
 /// `point`, except `self`: one image each, seen from `point`, in random order.
@@ -23,9 +25,9 @@ std::vector<Neighbor> mobile_neighbors(const Packing& packing, Vec2 point, DiskI
 /// bound (a void lies in the convex hull of its corners), and nothing needs repair.
 bool covers_all(Vec2 c, double r, const std::vector<Corner>& corners);
 
-/// True when no circle of a disk within 2r of `center` borders a void (no uncovered
-/// corner, no uncovered isolated circle). An exact local maximality check for the
-/// region D(center, r) after disks there were removed; unlike the corners inside the
+/// True when no circle of a disk that can reach D(center, r) borders a void (no
+/// uncovered corner, no uncovered isolated circle). An exact local maximality check for
+/// the region D(center, r) after disks there were removed; unlike the corners inside the
 /// region alone, it also sees a void with no corner at all (possible when only a few
 /// disks are left).
 bool void_free_near(const Packing& packing, Vec2 center, double r);
@@ -35,8 +37,7 @@ bool void_free_near(const Packing& packing, Vec2 center, double r);
 std::size_t attractor_eject(UndoLog& log, Packing& packing, DiskId p, Rng& rng, std::size_t max_removed);
 
 /// Restores maximality inside D(center, r) after a disk there was lifted or moved: while
-/// the region holds uncovered corners, injects a disk at one end of their diameter pair
-/// (paper, 2.1). Corners are the only place voids can hide: everything outside the
+/// the region holds uncovered corners, injects a disk at void_corner (paper, 2.1). Corners are the only place voids can hide: everything outside the
 /// region was covered before. Returns the number injected; stops early, returning
 /// max_added + 1, when more than max_added would be needed.
 std::size_t repair_void(UndoLog& log, const Packing& packing, Vec2 center, double r, Rng& rng,

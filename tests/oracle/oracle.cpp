@@ -2,36 +2,44 @@
 //
 // Why the maximality check is exact (up to tol).
 //
-// Let U be the union of the N > 0 closed disks (all periodic images) on the torus T.
-// A "corner" is an intersection point of two distinct circles (two disks, or a disk
-// and another image of itself); a circle is "isolated" if it meets no other circle.
+// Let U be the union of the N > 0 closed disks (all periodic images) on the torus T;
+// disk i has radius r_i. A "corner" is an intersection point of two distinct circles
+// (two disks, or a disk and another image of itself), a tangent point included, from
+// outside or inside; a circle is "isolated" if it meets no other circle.
 //
 // (a) If U != T, take an uncovered point and its component V of T \ U. V is open and
-//     V != T, so some circle C_i touches V. If C_i is isolated, step 3 reports it.
-//     Otherwise follow C_i along the boundary of V: the boundary arc ends where C_i
-//     enters another disk j, i.e. at a corner p of C_i and C_j (if C_j only touches
-//     C_i, p is the tangent point). p is in the closure of V, so p lies in the open
-//     interior of no other disk, and step 2 reports it unless a third circle passes
-//     exactly through p (the degenerate case below).
+//     V != T, so some circle C_i touches V. If C_i is isolated, step 3 reports it:
+//     no other disk can contain its points next to V. Otherwise follow C_i along the
+//     boundary of V: the boundary arc ends where C_i enters another disk j, i.e. at a
+//     corner p of C_i and C_j (if C_j only touches C_i, p is the tangent point; if
+//     disk i lies inside disk j, C_i touches V only at such a point). p is in the
+//     closure of V, so p lies in the open interior of no other disk, and step 2
+//     reports it unless a third circle passes exactly through p (the degenerate case
+//     below).
 // (b) If U == T, every corner p of C_i and C_j lies in a third closed disk: points
-//     just outside both disks near p are covered by the finitely many other closed
-//     disks, so one of them contains p. And no circle is isolated: equal disks cannot
-//     contain one another, so an isolated circle is ringed by uncovered points.
+//     just outside both disks near p exist (two circles through p never leave p
+//     without an outside wedge or cusp), they are covered by the finitely many other
+//     closed disks, so one of them contains p. An isolated circle is covered only by
+//     a disk that contains all of it (a disk covering points arbitrarily close to the
+//     circle without meeting it contains it): step 3 looks for one at one point.
 //
-// So "N > 0, no isolated circle, every corner within a third disk" is equivalent to
-// "covered", except when a void corner lies exactly on a third circle (within tol):
-// a measure-zero coincidence that would have to happen at every corner of a void.
-// Step 2b probes beside every corner for exactly that case; the random probes (step
-// 4) are an independent backstop for it and for bugs here.
+// So "N > 0, every isolated circle in another disk, every corner within a third disk"
+// is equivalent to "covered", except when a void corner lies exactly on a third
+// circle (within tol): a measure-zero coincidence that would have to happen at every
+// corner of a void. Step 2b probes beside every corner for exactly that case; the
+// random probes (step 4) are an independent backstop for it and for bugs here.
 //
-// Tolerance: a point is covered when a center is within r*(1+tol), so voids whose
-// corners are all within about r*tol of a third disk are accepted. Centers within
-// r*tol of each other count as one disk (coincident circles have no corners, and a
-// duplicate must not "cover" the corners of its twin).
+// Tolerance: a point is covered when a center i is within r_i*(1+tol), so voids whose
+// corners are all within about r*tol of a third disk are accepted. Disks whose centers
+// and radii agree within r*tol count as one disk (coincident circles have no corners,
+// and a duplicate must not "cover" the corners of its twin).
+//
+// One radius r is the case r_i = r: the same code, with the same arithmetic.
 //
 // Neighbours are found either by looking at every center and every periodic image
-// that can be in range (obviously correct) or by a bin grid (fast). Both produce the
-// same images with bit-identical coordinates; oracle_test.cpp checks they agree.
+// that can be in range (obviously correct) or by a bin grid (fast), sized by the
+// largest radius. Both produce the same images with bit-identical coordinates;
+// oracle_test.cpp checks they agree.
 
 #include "oracle/oracle.h"
 
@@ -177,9 +185,10 @@ class Images {
   std::vector<double> cx_, cy_;  // x_[id_[k]], y_[id_[k]]
 };
 
-void add_conflict(Report& rep, std::size_t i, std::size_t j, double d) {
-  if (rep.conflicts.size() < kKeep) rep.conflicts.push_back({i, j, d});
-  ++rep.conflict_count;
+void add_pair(std::vector<Conflict>& list, std::size_t& count, std::size_t i, std::size_t j,
+              double d) {
+  if (list.size() < kKeep) list.push_back({i, j, d});
+  ++count;
 }
 
 // why() builds the message; it is only called for kept entries (formatting is slow).
@@ -190,15 +199,22 @@ void add_uncovered(Report& rep, const Box& box, double x, double y, Why why) {
   ++rep.uncovered_count;
 }
 
-// How far (in units of r) step 2b probes beside each corner.
+// How far (in units of the smaller radius) step 2b probes beside each corner.
 constexpr double kCornerProbe = 0.01;
 
-Report run(const Box& box, double r, const Points& centers, double tol, bool conflicts,
-           bool maximality, std::size_t probes, std::uint64_t seed, Method method) {
+// A disk that built a candidate point: it does not count as covering that point.
+struct Disk {
+  double x, y, r;
+};
+
+Report run(const Box& box, const Points& centers, const std::vector<double>& radii, double tol,
+           bool conflicts, bool maximality, std::size_t probes, std::uint64_t seed,
+           Method method) {
   const double W = box.width, H = box.height;
   if (!(std::isfinite(W) && std::isfinite(H) && W > 0 && H > 0))
     throw std::invalid_argument("oracle: box sides must be finite and positive");
-  if (!(std::isfinite(r) && r > 0)) throw std::invalid_argument("oracle: r must be > 0");
+  if (radii.size() != centers.size())
+    throw std::invalid_argument("oracle: radii must have one radius per center");
   if (!(tol >= 0 && tol < 1)) throw std::invalid_argument("oracle: tol must be in [0, 1)");
   Points c;
   for (const auto& p : centers) {
@@ -207,12 +223,22 @@ Report run(const Box& box, double r, const Points& centers, double tol, bool con
     c.push_back({wrap(p[0], W), wrap(p[1], H)});
   }
   const std::size_t n = c.size();
+  double r_max = 0, r_min = std::numeric_limits<double>::infinity();
+  std::vector<double> reach(n);  // a point is covered if center k is within reach[k]
+  for (std::size_t k = 0; k < n; ++k) {
+    if (!(std::isfinite(radii[k]) && radii[k] > 0))
+      throw std::invalid_argument("oracle: radii must be finite and > 0");
+    r_max = std::max(r_max, radii[k]);
+    r_min = std::min(r_min, radii[k]);
+    reach[k] = radii[k] * (1 + tol);
+  }
 
   Report rep;
   rep.conflicts_checked = conflicts;
   rep.maximality_checked = maximality;
   rep.n = n;
-  rep.r = r;
+  rep.r = r_max;
+  rep.r_min = n ? r_min : 0;
   rep.tol = tol;
   if (n == 0) {
     if (maximality) add_uncovered(rep, box, 0, 0, [] { return "there are no disks"; });
@@ -221,10 +247,9 @@ Report run(const Box& box, double r, const Points& centers, double tol, bool con
 
   const bool grid =
       method == Method::grid || (method == Method::automatic && n > kAllPairsMaxN);
-  const double reach = r * (1 + tol);  // a point is covered if a center is this close
-  const double same = r * tol;         // centers this close are one disk
-  // Coverage queries have radius `reach`: slightly larger cells keep them to 3x3 cells.
-  const Images images(box, c, 1.01 * reach, grid);
+  const double reach_max = r_max * (1 + tol);
+  // Coverage queries have radius reach_max: slightly larger cells keep them to 3x3 cells.
+  const Images images(box, c, 1.01 * reach_max, grid);
 
   auto dist2 = [](double x0, double y0, double x1, double y1) {
     return (x1 - x0) * (x1 - x0) + (y1 - y0) * (y1 - y0);
@@ -232,77 +257,102 @@ Report run(const Box& box, double r, const Points& centers, double tol, bool con
   auto dist = [&](double x0, double y0, double x1, double y1) {
     return std::sqrt(dist2(x0, y0, x1, y1));
   };
+  auto covers = [&](const Image& k, double px, double py) {
+    return dist2(k.x, k.y, px, py) <= reach[k.j] * reach[k.j];
+  };
+  auto covered = [&](double px, double py) {
+    return images.visit(px, py, reach_max, [&](const Image& k) { return covers(k, px, py); });
+  };
+  // Is image k (a copy of) generator g: center and radius within g.r*tol?
+  auto is_same = [&](const Image& k, const Disk& g) {
+    const double same = g.r * tol;
+    return dist2(k.x, k.y, g.x, g.y) <= same * same && std::fabs(radii[k.j] - g.r) <= same;
+  };
   // Is (px, py) within reach of a disk other than the given one or two (generator) disks?
-  auto covered_by_other = [&](double px, double py, double gx0, double gy0, double gx1,
-                              double gy1) {
-    return images.visit(px, py, reach, [&](const Image& k) {
-      return dist2(k.x, k.y, gx0, gy0) > same * same && dist2(k.x, k.y, gx1, gy1) > same * same;
+  auto covered_by_other = [&](double px, double py, const Disk& g0, const Disk& g1) {
+    return images.visit(px, py, reach_max, [&](const Image& k) {
+      return covers(k, px, py) && !is_same(k, g0) && !is_same(k, g1);
     });
   };
 
   // Steps 2 (corners) and conflicts: every pair of disks, and every disk with its own
-  // images, at every periodic offset that brings them within 2r.
+  // images, at every periodic offset that brings them within r_i + r_j.
   std::vector<char> meets(n, 0);  // does circle i meet another circle?
   for (std::size_t i : images.order()) {
-    const double xi = c[i][0], yi = c[i][1];
-    images.visit(xi, yi, 2 * r, [&](const Image& im) {
+    const double xi = c[i][0], yi = c[i][1], ri = radii[i];
+    images.visit(xi, yi, ri + r_max, [&](const Image& im) {
       if (im.j == i && im.a == 0 && im.b == 0) return false;  // disk i itself
+      const double rj = radii[im.j];
       const double d = dist(xi, yi, im.x, im.y);
-      if (d > same && d <= 2 * r) meets[i] = 1;
+      if (d > ri + rj) return false;
+      const double lo = std::min(ri, rj), hi = std::max(ri, rj);
+      // Coincident circles have no corners; otherwise circles at most ri + rj apart
+      // meet unless one lies inside the other.
+      const bool meet = !(d <= lo * tol && hi - lo <= lo * tol) && d >= hi - lo;
+      if (meet) meets[i] = 1;
       // Count each pair once: j > i, or j == i with a "positive" offset (not its mirror).
       const bool once = im.j > i || (im.j == i && (im.a > 0 || (im.a == 0 && im.b > 0)));
       if (!once) return false;
       rep.min_distance = std::min(rep.min_distance, d);
-      if (conflicts && d < r * (1 - tol)) add_conflict(rep, i, im.j, d);
-      if (!maximality || d <= same || d > 2 * r) return false;
-      // Intersection points in angle form: from c_i towards the other center, turned
-      // by +-acos(d/2r). Tangent circles (half == 0) meet at one point.
-      const double base = std::atan2(im.y - yi, im.x - xi);
-      const double half = std::acos(std::min(1.0, d / (2 * r)));
-      for (double ang : {base - half, base + half}) {
-        const double px = xi + r * std::cos(ang), py = yi + r * std::sin(ang);
-        if (!covered_by_other(px, py, xi, yi, im.x, im.y)) {
+      if (conflicts && d < lo * (1 - tol))
+        add_pair(rep.conflicts, rep.conflict_count, i, im.j, d);
+      else if (conflicts && d < hi * (1 - tol))  // allowed: only the larger covers
+        add_pair(rep.covered_centers, rep.covered_center_count, i, im.j, d);
+      if (!maximality || !meet) return false;
+      // Intersection points c_i + a*u -+ h*u_perp (u the unit vector to the other
+      // center). h^2 in factored form: accurate near tangency, and exactly 0 for
+      // circles exactly tangent (from outside or inside), which meet at one point.
+      const double ux = (im.x - xi) / d, uy = (im.y - yi) / d;
+      const double a = (ri * ri - rj * rj + d * d) / (2 * d);
+      const double h2 = (ri + rj - d) * (d + ri - rj) * (d - ri + rj) * (d + ri + rj);
+      const double h = std::sqrt(std::max(0.0, h2)) / (2 * d);
+      const Disk gi{xi, yi, ri}, gj{im.x, im.y, rj};
+      for (const double side : {-1.0, 1.0}) {
+        const double px = xi + a * ux - side * h * uy, py = yi + a * uy + side * h * ux;
+        if (!covered_by_other(px, py, gi, gj)) {
           add_uncovered(rep, box, px, py, [&] {
             std::ostringstream why;
             why << "corner of disks " << i << " and " << im.j << " (image offset " << im.a
                 << "," << im.b << ") is not covered by a third disk";
             return why.str();
           });
-          if (half == 0) break;
+          if (h == 0) break;
           continue;
         }
         // Step 2b: beside a covered corner, a probe a little way into the region
-        // outside both circles, along the bisector pointing away from both centers
-        // (both normals of tangent circles). Sound like any probe, and it sees the void
-        // that a corner lying exactly on a third circle hides (the degenerate case
-        // above), e.g. the cusp beside two tangent circles.
-        const double ux = 2 * px - xi - im.x, uy = 2 * py - yi - im.y, ul = std::hypot(ux, uy);
-        const double nx = (im.y - yi) / d, ny = -(im.x - xi) / d;
+        // outside both circles, along the sum of the two outward normals (both
+        // tangent directions when circles touch from outside, where the normals
+        // cancel). Sound like any probe, and it sees the void that a corner lying
+        // exactly on a third circle hides (the degenerate case above), e.g. the cusp
+        // beside two tangent circles.
+        const double wx = (px - xi) / ri + (px - im.x) / rj, wy = (py - yi) / ri + (py - im.y) / rj;
+        const double wl = std::hypot(wx, wy);
         for (const double sign : {1.0, -1.0}) {
-          const double wx = ul > 1e-9 * r ? ux / ul : sign * nx, wy = ul > 1e-9 * r ? uy / ul : sign * ny;
-          const double qx = px + kCornerProbe * r * wx, qy = py + kCornerProbe * r * wy;
-          if (!images.visit(qx, qy, reach, [](const Image&) { return true; }))
+          const double dx = wl > 1e-9 ? wx / wl : sign * uy, dy = wl > 1e-9 ? wy / wl : -sign * ux;
+          const double qx = px + kCornerProbe * lo * dx, qy = py + kCornerProbe * lo * dy;
+          if (!covered(qx, qy))
             add_uncovered(rep, box, qx, qy, [&] {
               std::ostringstream why;
               why << "probe beside the corner of disks " << i << " and " << im.j
                   << " is covered by no disk";
               return why.str();
             });
-          if (ul > 1e-9 * r) break;
+          if (wl > 1e-9) break;
         }
-        if (half == 0) break;
+        if (h == 0) break;
       }
       return false;
     });
   }
   if (!maximality) return rep;
 
-  // Step 3: a circle that meets no other circle borders a void.
+  // Step 3: a circle that meets no other circle borders a void, unless it lies inside
+  // another disk (which then covers all of it, so one point is enough to look at).
   for (std::size_t i = 0; i < n; ++i) {
     if (meets[i]) continue;
-    const double xi = c[i][0], yi = c[i][1];
-    if (!covered_by_other(xi + r, yi, xi, yi, xi, yi))
-      add_uncovered(rep, box, xi + r, yi, [&] {
+    const double xi = c[i][0], yi = c[i][1], ri = radii[i];
+    if (!covered_by_other(xi + ri, yi, {xi, yi, ri}, {xi, yi, ri}))
+      add_uncovered(rep, box, xi + ri, yi, [&] {
         return "circle of disk " + std::to_string(i) + " meets no other circle";
       });
   }
@@ -313,12 +363,15 @@ Report run(const Box& box, double r, const Points& centers, double tol, bool con
   for (std::size_t p = 0; p < probes; ++p) {
     const double px = W * unit(), py = H * unit();
     double nearest = std::numeric_limits<double>::infinity();
-    images.visit(px, py, 2 * r, [&](const Image& k) {
-      nearest = std::min(nearest, dist(px, py, k.x, k.y));
+    bool hit = false;
+    images.visit(px, py, 2 * r_max, [&](const Image& k) {
+      const double dk = dist(px, py, k.x, k.y);
+      nearest = std::min(nearest, dk);
+      hit = hit || dk <= reach[k.j];
       return false;
     });
     rep.max_probe_gap = std::max(rep.max_probe_gap, nearest);
-    if (!(nearest <= reach))
+    if (!hit)
       add_uncovered(rep, box, px, py, [&] {
         std::ostringstream why;
         why << "probe: nearest center at distance " << nearest;
@@ -328,18 +381,35 @@ Report run(const Box& box, double r, const Points& centers, double tol, bool con
   return rep;
 }
 
+// One radius: validated here (also when there are no centers), echoed as given.
+Report run_uniform(const Box& box, double r, const Points& centers, double tol, bool conflicts,
+                   bool maximality, std::size_t probes, std::uint64_t seed, Method method) {
+  if (!(std::isfinite(r) && r > 0)) throw std::invalid_argument("oracle: r must be > 0");
+  Report rep = run(box, centers, std::vector<double>(centers.size(), r), tol, conflicts,
+                   maximality, probes, seed, method);
+  rep.r = rep.r_min = r;
+  return rep;
+}
+
 }  // namespace
 
 std::string Report::summary() const {
   std::ostringstream s;
   s.precision(10);
-  s << "oracle: N=" << n << ", r=" << r << ", tol=" << tol << ". ";
+  s << "oracle: N=" << n;
+  if (r_min == r)
+    s << ", r=" << r;
+  else
+    s << ", radii in [" << r_min << ", " << r << "]";
+  s << ", tol=" << tol << ". ";
   if (conflicts_checked) {
     s << "Conflicts: " << conflict_count;
     for (std::size_t k = 0; k < conflicts.size() && k < 5; ++k)
       s << (k ? "; " : " (") << "disks " << conflicts[k].i << " and " << conflicts[k].j
         << " at distance " << conflicts[k].distance;
     s << (conflicts.empty() ? "" : conflict_count > 5 ? "; ...)" : ")") << ". ";
+    if (covered_center_count > 0)
+      s << "Centers covered by a larger disk (allowed): " << covered_center_count << ". ";
   } else {
     s << "Conflicts: not checked. ";
   }
@@ -360,17 +430,32 @@ std::string Report::summary() const {
 
 Report check_conflicts(const Box& box, double r, const Points& centers, double tol,
                        Method method) {
-  return run(box, r, centers, tol, true, false, 0, 0, method);
+  return run_uniform(box, r, centers, tol, true, false, 0, 0, method);
 }
 
 Report check_maximal(const Box& box, double r, const Points& centers, double tol,
                      std::size_t probes, std::uint64_t seed, Method method) {
-  return run(box, r, centers, tol, false, true, probes, seed, method);
+  return run_uniform(box, r, centers, tol, false, true, probes, seed, method);
 }
 
 Report check_all(const Box& box, double r, const Points& centers, double tol,
                  std::size_t probes, std::uint64_t seed, Method method) {
-  return run(box, r, centers, tol, true, true, probes, seed, method);
+  return run_uniform(box, r, centers, tol, true, true, probes, seed, method);
+}
+
+Report check_conflicts(const Box& box, const std::vector<double>& radii, const Points& centers,
+                       double tol, Method method) {
+  return run(box, centers, radii, tol, true, false, 0, 0, method);
+}
+
+Report check_maximal(const Box& box, const std::vector<double>& radii, const Points& centers,
+                     double tol, std::size_t probes, std::uint64_t seed, Method method) {
+  return run(box, centers, radii, tol, false, true, probes, seed, method);
+}
+
+Report check_all(const Box& box, const std::vector<double>& radii, const Points& centers,
+                 double tol, std::size_t probes, std::uint64_t seed, Method method) {
+  return run(box, centers, radii, tol, true, true, probes, seed, method);
 }
 
 }  // namespace oracle

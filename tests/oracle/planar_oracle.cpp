@@ -23,14 +23,21 @@
 // (b) If D is covered, each candidate is covered by another disk: points of D close
 //     to it and outside its own disks exist (for (1) away from the boundary, (2) and
 //     (3) always: a segment point has half a neighbourhood in D, and a disk through it
-//     cannot cover that half alone; an isolated circle is ringed by uncovered points,
-//     since equal disks cannot contain one another), and the finitely many closed
-//     disks covering them include one that contains the candidate. A circle–circle
-//     point on the boundary or within r*tol outside it could in principle have its
-//     uncovered side outside D; the boundary disks cover such points in practice
-//     (they are within r of the nearest boundary point, which is within r*tol).
-// The random probes are an independent backstop for the degenerate cases and for bugs
-// here. As in oracle.cpp, centers within r*tol of each other count as one disk.
+//     cannot cover that half alone; an isolated circle is covered only by a disk that
+//     contains all of it, and otherwise ringed by uncovered points), and the finitely
+//     many closed disks covering them include one that contains the candidate. A
+//     circle–circle point on the boundary or within r*tol outside it could in
+//     principle have its uncovered side outside D; the boundary disks cover such
+//     points in practice (they are within r of the nearest boundary point, which is
+//     within r*tol).
+// Circle–circle points here include tangent points, from outside or inside; disk i
+// has radius r_i throughout, and one radius r is the case r_i = r (same code, same
+// arithmetic). As in oracle.cpp, a probe just beside each covered candidate (1), into
+// the region outside both disks, catches the degenerate case of a void whose corners
+// all lie exactly on third circles (e.g. the cusp between two tangent circles). The
+// random probes are an independent backstop for the degenerate cases and for bugs
+// here. As in oracle.cpp, disks whose centers and radii agree within r*tol count as
+// one disk.
 //
 // 1D maximality is checked directly: on each segment, the parameter interval each
 // boundary disk covers (its reach r*(1+tol) met with the segment), merged and compared
@@ -165,8 +172,13 @@ void add_uncovered(PlanarReport& rep, double x, double y, Why why) {
   ++rep.uncovered_count;
 }
 
-void validate(const Domain& domain, const Points& centers, double r, const PlanarOptions& opt) {
-  if (!(std::isfinite(r) && r > 0)) throw std::invalid_argument("planar oracle: r must be > 0");
+void validate(const Domain& domain, const Points& centers, const std::vector<double>& radii,
+              const PlanarOptions& opt) {
+  if (radii.size() != centers.size())
+    throw std::invalid_argument("planar oracle: radii must have one radius per center");
+  for (double r : radii)
+    if (!(std::isfinite(r) && r > 0))
+      throw std::invalid_argument("planar oracle: radii must be finite and > 0");
   if (!(opt.tol >= 0 && opt.tol < 1))
     throw std::invalid_argument("planar oracle: tol must be in [0, 1)");
   if (domain.loops.empty()) throw std::invalid_argument("planar oracle: the domain has no loop");
@@ -198,6 +210,9 @@ bool segment_interval(const Segment& s, double x, double y, double R, double& t0
   return true;
 }
 
+// How far (in units of the smaller radius) a probe goes beside each circle–circle corner.
+constexpr double kCornerProbe = 0.01;
+
 }  // namespace
 
 double domain_area(const Domain& domain) {
@@ -223,16 +238,23 @@ double distance_to_boundary(const Domain& domain, double x, double y) {
   return boundary_distance(segments_of(domain), x, y);
 }
 
-PlanarReport check_planar(const Domain& domain, const Points& c, double r,
+PlanarReport check_planar(const Domain& domain, const Points& c, const std::vector<double>& radii,
                           const PlanarOptions& opt) {
-  validate(domain, c, r, opt);
+  validate(domain, c, radii, opt);
   const double tol = opt.tol;
   const std::size_t n = c.size();
   const auto segs = segments_of(domain);
-  const double reach = r * (1 + tol);  // a point is covered if a center is this close
-  const double same = r * tol;         // centers this close are one disk; "on" a line
-  auto in_domain = [&](double x, double y) {
-    return even_odd(segs, x, y) || boundary_distance(segs, x, y) <= same;
+  double r_max = 0, r_min = std::numeric_limits<double>::infinity();
+  std::vector<double> reach(n);  // a point is covered if center k is within reach[k]
+  for (std::size_t k = 0; k < n; ++k) {
+    r_max = std::max(r_max, radii[k]);
+    r_min = std::min(r_min, radii[k]);
+    reach[k] = radii[k] * (1 + tol);
+  }
+  const double reach_max = r_max * (1 + tol);
+  // slack: how far outside the boundary still counts as in (r*tol of the disks concerned).
+  auto in_domain = [&](double x, double y, double slack) {
+    return even_odd(segs, x, y) || boundary_distance(segs, x, y) <= slack;
   };
 
   PlanarReport rep;
@@ -241,16 +263,20 @@ PlanarReport check_planar(const Domain& domain, const Points& c, double r,
   rep.conflicts_checked = opt.conflicts;
   rep.maximality_checked = opt.maximality;
   rep.n = n;
-  rep.r = r;
+  rep.r = r_max;
+  rep.r_min = n ? r_min : 0;
   rep.tol = tol;
 
-  const Bins bins(c, reach);
+  const Bins bins(c, reach_max);
+  auto covered = [&](double px, double py) {
+    return bins.visit(px, py, reach_max, [&](std::size_t k, double d) { return d <= reach[k]; });
+  };
 
   // Which disks are boundary disks.
   std::vector<char> on_boundary(n, 0);
   for (std::size_t i = 0; i < n; ++i) {
     const bool flagged = opt.boundary_flags.empty()
-                             ? boundary_distance(segs, c[i][0], c[i][1]) <= same
+                             ? boundary_distance(segs, c[i][0], c[i][1]) <= radii[i] * tol
                              : opt.boundary_flags[i] != 0;
     on_boundary[i] = flagged;
     rep.boundary_count += flagged;
@@ -259,7 +285,7 @@ PlanarReport check_planar(const Domain& domain, const Points& c, double r,
   // (a) Containment.
   if (opt.containment)
     for (std::size_t i = 0; i < n; ++i)
-      if (!in_domain(c[i][0], c[i][1]))
+      if (!in_domain(c[i][0], c[i][1], radii[i] * tol))
         keep(rep.outside, rep.outside_count,
              {i, c[i][0], c[i][1], boundary_distance(segs, c[i][0], c[i][1])});
 
@@ -268,12 +294,15 @@ PlanarReport check_planar(const Domain& domain, const Points& c, double r,
     for (std::size_t i = 0; i < n; ++i) {
       if (!on_boundary[i]) continue;
       const double dist = boundary_distance(segs, c[i][0], c[i][1]);
-      if (!(dist <= same)) keep(rep.off_boundary, rep.off_boundary_count, {i, c[i][0], c[i][1], dist});
+      if (!(dist <= radii[i] * tol))
+        keep(rep.off_boundary, rep.off_boundary_count, {i, c[i][0], c[i][1], dist});
     }
     for (std::size_t l = 0; l < domain.loops.size(); ++l)
       for (std::size_t k = 0; k < domain.loops[l].size(); ++k) {
         const auto& v = domain.loops[l][k];
-        if (bins.visit(v[0], v[1], same, [](std::size_t, double) { return true; })) continue;
+        if (bins.visit(v[0], v[1], r_max * tol,
+                       [&](std::size_t i, double d) { return d <= radii[i] * tol; }))
+          continue;
         double nearest = std::numeric_limits<double>::infinity();
         for (const auto& p : c) nearest = std::min(nearest, std::hypot(p[0] - v[0], p[1] - v[1]));
         keep(rep.bare_corners, rep.bare_corner_count, {l, k, v[0], v[1], nearest});
@@ -286,36 +315,69 @@ PlanarReport check_planar(const Domain& domain, const Points& c, double r,
     return rep;
   }
 
+  // Is disk k not (a copy of) disk g: center or radius off by more than r_g*tol?
   auto far = [&](std::size_t k, std::size_t g) {
-    return std::hypot(c[k][0] - c[g][0], c[k][1] - c[g][1]) > same;
+    const double same = radii[g] * tol;
+    return std::hypot(c[k][0] - c[g][0], c[k][1] - c[g][1]) > same ||
+           std::fabs(radii[k] - radii[g]) > same;
   };
   // Is (px, py) within reach of a disk other than (the disks at) g0 and g1?
   auto covered_by_other = [&](double px, double py, std::size_t g0, std::size_t g1) {
-    return bins.visit(px, py, reach, [&](std::size_t k, double) { return far(k, g0) && far(k, g1); });
+    return bins.visit(px, py, reach_max, [&](std::size_t k, double d) {
+      return d <= reach[k] && far(k, g0) && far(k, g1);
+    });
   };
 
-  // (c) Conflicts, and candidates (1): every pair within 2r.
+  // (c) Conflicts, and candidates (1): every pair at most r_i + r_j apart.
   std::vector<char> meets(n, 0);  // does circle i meet another circle?
   for (std::size_t i = 0; i < n; ++i) {
-    const double xi = c[i][0], yi = c[i][1];
-    bins.visit(xi, yi, 2 * r, [&](std::size_t j, double d) {
-      if (j == i) return false;
-      if (d > same) meets[i] = 1;
+    const double xi = c[i][0], yi = c[i][1], ri = radii[i];
+    bins.visit(xi, yi, ri + r_max, [&](std::size_t j, double d) {
+      const double rj = radii[j];
+      if (j == i || d > ri + rj) return false;
+      const double lo = std::min(ri, rj), hi = std::max(ri, rj);
+      // Coincident circles have no corners; others meet unless one is inside the other.
+      const bool meet = !(d <= lo * tol && hi - lo <= lo * tol) && d >= hi - lo;
+      if (meet) meets[i] = 1;
       if (j < i) return false;  // each pair once
       rep.min_distance = std::min(rep.min_distance, d);
-      if (opt.conflicts && d < r * (1 - tol)) keep(rep.conflicts, rep.conflict_count, {i, j, d});
-      if (!opt.maximality || d <= same) return false;
-      // From c_i towards c_j, turned by +-acos(d/2r); tangent circles meet once.
-      const double base = std::atan2(c[j][1] - yi, c[j][0] - xi);
-      const double half = std::acos(std::min(1.0, d / (2 * r)));
-      for (double ang : {base - half, base + half}) {
-        const double px = xi + r * std::cos(ang), py = yi + r * std::sin(ang);
-        if (!covered_by_other(px, py, i, j) && in_domain(px, py))
-          add_uncovered(rep, px, py, [&] {
-            return "corner of disks " + std::to_string(i) + " and " + std::to_string(j) +
-                   " is not covered by a third disk";
-          });
-        if (half == 0) break;
+      if (opt.conflicts && d < lo * (1 - tol))
+        keep(rep.conflicts, rep.conflict_count, {i, j, d});
+      else if (opt.conflicts && d < hi * (1 - tol))  // allowed: only the larger covers
+        keep(rep.covered_centers, rep.covered_center_count, {i, j, d});
+      if (!opt.maximality || !meet) return false;
+      // c_i + a*u -+ h*u_perp, with h^2 in factored form (exactly 0 when tangent).
+      const double ux = (c[j][0] - xi) / d, uy = (c[j][1] - yi) / d;
+      const double a = (ri * ri - rj * rj + d * d) / (2 * d);
+      const double h2 = (ri + rj - d) * (d + ri - rj) * (d - ri + rj) * (d + ri + rj);
+      const double h = std::sqrt(std::max(0.0, h2)) / (2 * d);
+      for (const double side : {-1.0, 1.0}) {
+        const double px = xi + a * ux - side * h * uy, py = yi + a * uy + side * h * ux;
+        if (!covered_by_other(px, py, i, j)) {
+          if (in_domain(px, py, lo * tol))
+            add_uncovered(rep, px, py, [&] {
+              return "corner of disks " + std::to_string(i) + " and " + std::to_string(j) +
+                     " is not covered by a third disk";
+            });
+        } else {
+          // Beside a covered corner, into the region outside both disks (along the sum
+          // of the outward normals, or both tangent directions when they cancel).
+          const double wx = (px - xi) / ri + (px - c[j][0]) / rj;
+          const double wy = (py - yi) / ri + (py - c[j][1]) / rj;
+          const double wl = std::hypot(wx, wy);
+          for (const double sign : {1.0, -1.0}) {
+            const bool cancel = !(wl > 1e-9);
+            const double dx = cancel ? sign * uy : wx / wl, dy = cancel ? -sign * ux : wy / wl;
+            const double qx = px + kCornerProbe * lo * dx, qy = py + kCornerProbe * lo * dy;
+            if (even_odd(segs, qx, qy) && !covered(qx, qy))
+              add_uncovered(rep, qx, qy, [&] {
+                return "probe beside the corner of disks " + std::to_string(i) + " and " +
+                       std::to_string(j) + " is covered by no disk";
+              });
+            if (!cancel) break;
+          }
+        }
+        if (h == 0) break;
       }
       return false;
     });
@@ -323,14 +385,15 @@ PlanarReport check_planar(const Domain& domain, const Points& c, double r,
   if (!opt.maximality) return rep;
 
   // Candidates (2): each circle with each segment.
-  for (std::size_t i = 0; i < n; ++i)
+  for (std::size_t i = 0; i < n; ++i) {
+    const double ri = radii[i];
     for (std::size_t s = 0; s < segs.size(); ++s) {
       const Segment& g = segs[s];
-      if (std::min(g.ax, g.bx) > c[i][0] + r || std::max(g.ax, g.bx) < c[i][0] - r ||
-          std::min(g.ay, g.by) > c[i][1] + r || std::max(g.ay, g.by) < c[i][1] - r)
+      if (std::min(g.ax, g.bx) > c[i][0] + ri || std::max(g.ax, g.bx) < c[i][0] - ri ||
+          std::min(g.ay, g.by) > c[i][1] + ri || std::max(g.ay, g.by) < c[i][1] - ri)
         continue;
       double t0, t1;
-      if (!segment_interval(g, c[i][0], c[i][1], r, t0, t1)) continue;
+      if (!segment_interval(g, c[i][0], c[i][1], ri, t0, t1)) continue;
       for (double t : {t0, t1}) {
         if (t < 0 || t > 1) continue;
         const double px = g.ax + t * (g.bx - g.ax), py = g.ay + t * (g.by - g.ay);
@@ -343,22 +406,23 @@ PlanarReport check_planar(const Domain& domain, const Points& c, double r,
         if (t1 == t0) break;
       }
     }
+  }
 
   // Candidates (3): polygon vertices.
   for (std::size_t l = 0; l < domain.loops.size(); ++l)
     for (std::size_t k = 0; k < domain.loops[l].size(); ++k) {
       const auto& v = domain.loops[l][k];
-      if (!bins.visit(v[0], v[1], reach, [](std::size_t, double) { return true; }))
+      if (!covered(v[0], v[1]))
         add_uncovered(rep, v[0], v[1], [&] {
           return "vertex " + std::to_string(k) + " of loop " + std::to_string(l) + " is not covered";
         });
     }
 
-  // Candidates (4): a circle that meets no other circle.
+  // Candidates (4): a circle that meets no other circle (and lies in no other disk).
   for (std::size_t i = 0; i < n; ++i) {
     if (meets[i]) continue;
-    const double px = c[i][0] - r, py = c[i][1];
-    if (in_domain(px, py) && !covered_by_other(px, py, i, i))
+    const double px = c[i][0] - radii[i], py = c[i][1];
+    if (in_domain(px, py, radii[i] * tol) && !covered_by_other(px, py, i, i))
       add_uncovered(rep, px, py, [&] {
         return "circle of disk " + std::to_string(i) + " meets no other circle";
       });
@@ -381,12 +445,14 @@ PlanarReport check_planar(const Domain& domain, const Points& c, double r,
     if (!even_odd(segs, px, py)) continue;
     ++rep.probes;
     double nearest = std::numeric_limits<double>::infinity();
-    bins.visit(px, py, 2 * r, [&](std::size_t, double d) {
+    bool hit = false;
+    bins.visit(px, py, 2 * r_max, [&](std::size_t k, double d) {
       nearest = std::min(nearest, d);
+      hit = hit || d <= reach[k];
       return false;
     });
     rep.max_probe_gap = std::max(rep.max_probe_gap, nearest);
-    if (!(nearest <= reach))
+    if (!hit)
       add_uncovered(rep, px, py, [&] {
         std::ostringstream why;
         why << "probe: nearest center at distance " << nearest;
@@ -399,7 +465,7 @@ PlanarReport check_planar(const Domain& domain, const Points& c, double r,
     std::vector<std::array<double, 2>> cover;
     for (std::size_t i = 0; i < n; ++i) {
       double t0, t1;
-      if (on_boundary[i] && segment_interval(g, c[i][0], c[i][1], reach, t0, t1) && t1 >= 0 &&
+      if (on_boundary[i] && segment_interval(g, c[i][0], c[i][1], reach[i], t0, t1) && t1 >= 0 &&
           t0 <= 1)
         cover.push_back({t0, t1});
     }
@@ -420,6 +486,15 @@ PlanarReport check_planar(const Domain& domain, const Points& c, double r,
   return rep;
 }
 
+PlanarReport check_planar(const Domain& domain, const Points& c, double r,
+                          const PlanarOptions& opt) {
+  // One radius: validated here (also when there are no centers), echoed as given.
+  if (!(std::isfinite(r) && r > 0)) throw std::invalid_argument("planar oracle: r must be > 0");
+  PlanarReport rep = check_planar(domain, c, std::vector<double>(c.size(), r), opt);
+  rep.r = rep.r_min = r;
+  return rep;
+}
+
 bool PlanarReport::ok() const {
   const bool any = containment_checked || boundary_checked || conflicts_checked || maximality_checked;
   return any && (!containment_checked || inside()) && (!boundary_checked || on_boundary()) &&
@@ -430,8 +505,12 @@ bool PlanarReport::ok() const {
 std::string PlanarReport::summary() const {
   std::ostringstream s;
   s.precision(10);
-  s << "planar oracle: N=" << n << " (" << boundary_count << " on the boundary), r=" << r
-    << ", tol=" << tol << ". ";
+  s << "planar oracle: N=" << n << " (" << boundary_count << " on the boundary), ";
+  if (r_min == r)
+    s << "r=" << r;
+  else
+    s << "radii in [" << r_min << ", " << r << "]";
+  s << ", tol=" << tol << ". ";
   auto list = [&](const char* title, bool checked, std::size_t count, std::size_t kept,
                   const std::function<void(std::size_t)>& item) {
     s << title << ": ";
@@ -465,6 +544,8 @@ std::string PlanarReport::summary() const {
     s << "disks " << conflicts[k].i << " and " << conflicts[k].j << " at distance "
       << conflicts[k].distance;
   });
+  if (conflicts_checked && covered_center_count > 0)
+    s << "Centers covered by a larger disk (allowed): " << covered_center_count << ". ";
   s << "Min center distance: " << min_distance << ". ";
   list("Uncovered (2D)", maximality_checked, uncovered_count, uncovered.size(), [&](std::size_t k) {
     s << "(" << uncovered[k].x << ", " << uncovered[k].y << "): " << uncovered[k].why;

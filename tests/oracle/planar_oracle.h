@@ -5,18 +5,23 @@
 // the plain witness types of oracle.h).
 //
 // Model: a closed polygonal domain (loop 0 the outer boundary, the others holes, any
-// orientation; the loops are trusted to be simple and disjoint), N disks of radius r.
+// orientation; the loops are trusted to be simple and disjoint), N disks of radius r,
+// or each with its own radius r_i (the overload taking `radii`; with equal radii both
+// give identical reports). For disk i, "r" below is r_i.
 //  - a point is in the domain when even-odd crossing over all segments says so, or it
 //    lies within r*tol of a segment (the closed domain, with slack);
 //  - a boundary disk is one whose center lies within r*tol of a segment (or one the
 //    caller flags so);
-//  - conflict: two centers closer than r*(1-tol);
-//  - covered point: within r*(1+tol) of some center;
+//  - conflict: two centers closer than min(r_i, r_j)*(1-tol);
+//  - covered center (information, not a failure): no conflict, but closer than
+//    max(r_i, r_j)*(1-tol), as the prior-disk rule allows;
+//  - covered point: within r_i*(1+tol) of some center i;
 //  - maximal: every point of the domain is covered (checked exactly via the corners of
 //    possible voids, plus random probes; see planar_oracle.cpp), and every boundary
 //    point is covered by a boundary disk (1D maximality, per segment by intervals).
-// Inputs must be finite, r > 0, 0 <= tol < 1, loops of >= 3 vertices and flags (when
-// given) one per center; otherwise std::invalid_argument is thrown.
+// Inputs must be finite, radii > 0 (one per center), 0 <= tol < 1, loops of >= 3
+// vertices and flags (when given) one per center; otherwise std::invalid_argument is
+// thrown.
 #pragma once
 
 #include <array>
@@ -84,7 +89,8 @@ struct PlanarReport {
   bool conflicts_checked = false, maximality_checked = false;
   // Inputs, echoed for summary().
   std::size_t n = 0, boundary_count = 0;
-  double r = 0, tol = 0;
+  double r = 0, tol = 0;  // r: the largest radius
+  double r_min = 0;       // the smallest radius (== r for one radius)
 
   // Each list keeps the first 100 found; the *_count fields count them all.
   std::vector<OutsideCenter> outside;
@@ -95,14 +101,17 @@ struct PlanarReport {
   std::size_t bare_corner_count = 0;
   std::vector<Conflict> conflicts;
   std::size_t conflict_count = 0;
+  // Pairs where only the larger disk covers the other center (never with one radius).
+  std::vector<Conflict> covered_centers;
+  std::size_t covered_center_count = 0;
   std::vector<Uncovered> uncovered;  // 2D: void corners and probes
   std::size_t uncovered_count = 0;
   std::vector<BoundaryGap> boundary_gaps;  // 1D
   std::size_t boundary_gap_count = 0;
 
-  // Smallest distance between two centers (only distances <= 2r are seen: infinity
-  // means none). Largest distance from a probe to its nearest center (infinity when
-  // one has none within 2r).
+  // Smallest distance between two centers (only pairs at most r_i + r_j apart are
+  // seen: infinity means none). Largest distance from a probe to its nearest center
+  // (infinity when one has none within 2r, r the largest radius).
   double min_distance = std::numeric_limits<double>::infinity();
   double max_probe_gap = 0;
   std::size_t probes = 0;  // probes actually placed in the domain
@@ -121,6 +130,10 @@ struct PlanarReport {
 
 PlanarReport check_planar(const Domain& domain, const std::vector<std::array<double, 2>>& centers,
                           double r, const PlanarOptions& options = {});
+
+// The same with one radius per center (radii.size() == centers.size()).
+PlanarReport check_planar(const Domain& domain, const std::vector<std::array<double, 2>>& centers,
+                          const std::vector<double>& radii, const PlanarOptions& options = {});
 
 // The area by the shoelace formula: |outer loop| minus the |holes|, any orientation.
 double domain_area(const Domain& domain);
