@@ -57,7 +57,7 @@ std::size_t attractor_eject(UndoLog& log, Packing& packing, DiskId p, Rng& rng, 
     // keeps q out of the other disks. (A non-convex domain may not hold the target.)
     for (int tries = 0; tries < 3 && t > 0; ++tries, t *= 0.9) {
       const Vec2 to = q.image + v * t;
-      if (packing.inside(to) && covers_all(to, packing.radius_at(to), corners)) {
+      if (packing.inside(to) && covers_all(packing, to, corners)) {
         log.move(q.id, to);  // still covers its void: no repair
         break;
       }
@@ -83,7 +83,7 @@ std::size_t attractor_eject(UndoLog& log, Packing& packing, DiskId p, Rng& rng, 
       z = k.image + (z - k.image) * (k.radius / std::sqrt(k.d2));
     }
   });
-  if (packing.conflicts(z, p) || !covers_all(z, packing.radius_at(z), corners)) {
+  if (packing.conflicts(z, p) || !covers_all(packing, z, corners)) {
     log.revert_to(mark);  // no place for p: everything back
     return 0;
   }

@@ -24,7 +24,7 @@ std::size_t repel_from(Packing& packing, Vec2 point, DiskId self, Rng& rng, std:
                                       [&](const Corner& a, const Corner& b) { return w(a) < w(b); });
     detail::UndoLog log(packing);
     log.move(q.id, far->point);
-    if (detail::covers_all(far->point, packing.radius(q.id), corners)) continue;  // no gap opened
+    if (detail::covers_all(packing, far->point, corners)) continue;  // no gap opened
     const std::size_t added = detail::repair_void(log, packing, q.image, r, rng, max_added);
     if (added > max_added) {
       log.revert();

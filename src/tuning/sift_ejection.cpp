@@ -22,7 +22,7 @@ bool replacement(const Packing& packing, const std::vector<Corner>& corners, Rng
   }
   if (lo.x > hi.x || lo.y > hi.y) return false;
   auto fits = [&](Vec2 x) {
-    return !packing.conflicts(x) && detail::covers_all(x, packing.radius_at(x), corners);
+    return !packing.conflicts(x) && detail::covers_all(packing, x, corners);
   };
   for (int t = 0; t < 32; ++t) {
     z = {lo.x + uniform01(rng) * (hi.x - lo.x), lo.y + uniform01(rng) * (hi.y - lo.y)};

@@ -27,17 +27,21 @@ Vec2 void_corner(const Packing& packing, const std::vector<Corner>& corners, Rng
   return corners[top[uniform_index(rng, top.size())]].point;
 }
 
-bool covers_all(Vec2 c, double r, const std::vector<Corner>& corners) {
+bool covers_all(const Packing& packing, Vec2 c, const std::vector<Corner>& corners) {
+  const double r = packing.radius_at(c);
+  const double inside = packing.sizing() ? r * (1 - 1e-7) : r;
   for (const Corner& k : corners) {
-    if (!is_covered(squared_distance(c, k.point), r)) return false;
+    if (!is_covered(squared_distance(c, k.point), inside)) return false;
   }
   return true;
 }
 
 std::vector<Neighbor> mobile_neighbors(const Packing& packing, Vec2 point, DiskId self, Rng& rng) {
   std::vector<Neighbor> near;
-  packing.for_each_near(point, 2 * packing.max_radius(), [&](const Neighbor& n) {
+  const double r = packing.radius_at(point);
+  packing.for_each_near(point, r + packing.max_radius(), [&](const Neighbor& n) {
     if (n.id == self || (packing.flags(n.id) & (kFixed | kFrozen))) return;
+    if (n.d2 > (r + n.radius) * (r + n.radius)) return;  // does not overlap a disk at point
     for (const Neighbor& m : near) {
       if (m.id == n.id) return;
     }
@@ -81,7 +85,7 @@ std::size_t void_inject(Packing& packing, DiskId p, Rng& rng, std::size_t max_ad
   const Vec2 to = detail::void_corner(packing, corners, rng);
   log.move(p, to);
   // Weighted diameter below 0: p covers its whole void from there, nothing to inject.
-  if (detail::covers_all(to, packing.radius(p), corners)) return 0;
+  if (detail::covers_all(packing, to, corners)) return 0;
   const std::size_t added = detail::repair_void(log, packing, c, r, rng, max_added);
   if (added > max_added) {
     log.revert();

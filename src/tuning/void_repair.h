@@ -17,13 +17,17 @@ namespace disktune::detail {
 /// choice would add a direction bias to every injected disk.
 Vec2 void_corner(const Packing& packing, const std::vector<Corner>& corners, Rng& rng);
 
-/// The disks that can move (not fixed, not frozen) whose centers lie within 2r of
-/// `point`, except `self`: one image each, seen from `point`, in random order.
+/// The disks that can move (not fixed, not frozen) overlapping a disk at `point` (of
+/// radius radius_at(point); for one radius: centers within 2r), except `self`: one
+/// image each, seen from `point`, in random order.
 std::vector<Neighbor> mobile_neighbors(const Packing& packing, Vec2 point, DiskId self, Rng& rng);
 
-/// True when the disk D(c, r) contains every corner: then it covers the whole void they
-/// bound (a void lies in the convex hull of its corners), and nothing needs repair.
-bool covers_all(Vec2 c, double r, const std::vector<Corner>& corners);
+/// True when a disk centered at c (radius radius_at(c)) contains every corner: then it
+/// covers the whole void they bound (a void lies in the convex hull of its corners), and
+/// nothing needs repair. With one radius a corner on the circle counts (the tolerance);
+/// with a sizing every corner must lie inside by 1e-7 r, because a corner left exactly
+/// on a circle whose radius just changed can open a sliver of void beside it.
+bool covers_all(const Packing& packing, Vec2 c, const std::vector<Corner>& corners);
 
 /// True when no circle of a disk that can reach D(center, r) borders a void (no
 /// uncovered corner, no uncovered isolated circle). An exact local maximality check for

@@ -130,12 +130,13 @@ void validate_packing(const Packing& packing, const std::string& what) {
     const Vec2 c = packing.center(id);
     DiskId other = kNoDisk;
     packing.any_near(c, packing.max_radius(), [&](const Neighbor& n) {
-      if (n.id != id && is_conflict(n.d2, packing.radius(id))) other = n.id;
+      if (n.id != id && is_conflict(n.d2, std::min(packing.radius(id), n.radius))) other = n.id;
       return other != kNoDisk;
     });
     if (other != kNoDisk) {
       msg << "disks at (" << c.x << ", " << c.y << ") and (" << packing.center(other).x << ", "
-          << packing.center(other).y << ") are closer than r: not a packing";
+          << packing.center(other).y << ") are closer than "
+          << (packing.sizing() ? "the smaller of their radii" : "r") << ": not a packing";
       throw InvalidInput(msg.str());
     }
     corners_on_circle(packing, id, corners);
