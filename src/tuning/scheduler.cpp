@@ -55,8 +55,9 @@ std::vector<PhasePlan> plan_for(const TuneOptions& o, bool eject, bool one_radiu
     case Method::automatic:  // no crystal growth for varying radii (paper, 6)
       if (eject) return one_radius ? std::vector<PhasePlan>{sift_phase, attractor_phase, crystal_eject_phase}
                                    : std::vector<PhasePlan>{sift_phase, attractor_phase};
+      // Without crystal growth the repeller phase is the last: it runs until it stalls.
       return one_radius ? std::vector<PhasePlan>{void_phase, repeller_phase, crystal_phase, finish}
-                        : std::vector<PhasePlan>{void_phase, repeller_phase};
+                        : std::vector<PhasePlan>{void_phase, finish};
     case Method::void_injection: return alone(void_phase);
     case Method::repeller_injection: return alone(repeller_phase);
     case Method::crystal_injection: return {crystal_phase, finish};
