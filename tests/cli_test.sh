@@ -170,6 +170,19 @@ sed 's/^3 3 4$/3 3 1/; s/^4 4 1$/4 4 3/' hole.poly > bad.poly
 expect planar-self-intersecting 2 "bad.poly" -- "$bin" sample --domain bad.poly --radius 0.05
 expect planar-bad-extension 2 "\.poly" -- "$bin" sample --domain hole.txt --radius 0.05
 
+# varying radii
+expect sizing-sample 0 "sizing 0.03 \+ 0.03\*x" -- "$bin" sample --domain hole.poly --sizing "0.03 + 0.03*x" --output v.csv
+expect sizing-tune 0 "reached" -- "$bin" tune --domain hole.poly --sizing "0.03 + 0.03*x" --input v.csv --target-fraction 0.7 --output v7.csv
+expect sizing-report 0 "maximal, conflict-free" -- "$bin" report v7.csv --domain hole.poly --sizing "0.03 + 0.03*x" --json v7.json
+expect sizing-wrong-radius 2 "v7.csv:2: radius .* sizing" -- "$bin" report v7.csv --domain hole.poly --sizing "0.02 + 0.03*x"
+expect sizing-periodic 0 "sample: [0-9]+ disks" -- "$bin" sample --sizing "0.03 + 0.01*sin(2*pi*x)" --output vp.csv
+expect sizing-both 2 "one of the two" -- "$bin" sample --radius 0.05 --sizing 0.05
+expect sizing-neither 2 "one of the two" -- "$bin" sample --output z.csv
+expect sizing-syntax 2 "position" -- "$bin" sample --domain hole.poly --sizing "0.03 + * x"
+expect sizing-steep 2 "gradation" -- "$bin" sample --domain hole.poly --sizing "0.01 + 0.8*x" --output z.csv
+absent sizing-steep-output z.csv
+expect sizing-crystal 2 "crystal growth needs one radius" -- "$bin" tune --domain hole.poly --sizing "0.03 + 0.03*x" --input v.csv --target-fraction 0.8 --method crystal
+
 # the sweep table (tiny)
 expect sweep 0 "\| CVT at the count of eta" -- "$bin" sweep --radius 0.05 --eta 0 0.6 --cvt-iterations 5 --output sweep.md
 grep -q "lloyd_optimize_mesh_2" sweep.md && pass=$((pass + 1)) || { echo "FAIL sweep.md"; fails=$((fails + 1)); }
