@@ -17,6 +17,8 @@
 namespace disktune {
 namespace {
 
+using test::message_of;
+
 using test::TempDir;
 
 const std::string kDomains = std::string(DISKTUNE_DATA_DIR) + "/domains/";
@@ -51,18 +53,6 @@ double signed_area(const std::vector<Vec2>& loop) {
 
 std::vector<Vec2> rect(double x0, double y0, double x1, double y1) {
   return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
-}
-
-// The message of the InvalidInput that f throws ("" and a failure if none).
-template <class F>
-std::string message_of(F&& f) {
-  try {
-    f();
-  } catch (const InvalidInput& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "no InvalidInput thrown";
-  return "";
 }
 
 bool mentions(const std::string& text, const std::string& part) {

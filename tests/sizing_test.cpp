@@ -20,21 +20,11 @@
 namespace disktune {
 namespace {
 
+using test::message_of;
+
 using test::TempDir;
 
 constexpr double kPi = 3.14159265358979323846;
-
-// The message of the exception E that f throws ("" and a failure if none).
-template <class E = InvalidInput, class F>
-std::string message_of(F&& f) {
-  try {
-    f();
-  } catch (const E& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "no exception thrown";
-  return "";
-}
 
 std::vector<Vec2> rect(double x0, double y0, double x1, double y1) {
   return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};

@@ -6,7 +6,9 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
+#include "disktune/errors.h"
 #include "disktune/packing.h"
 #include "disktune/periodic_box.h"
 #include "oracle/oracle.h"
@@ -32,5 +34,24 @@ struct TempDir {
   ~TempDir() { std::filesystem::remove_all(path); }
   std::string file(const std::string& name) const { return (path / name).string(); }
 };
+
+/// The message of the exception E that f throws ("" and a test failure if none).
+template <class E = InvalidInput, class F>
+std::string message_of(F&& f) {
+  try {
+    f();
+  } catch (const E& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "no exception thrown";
+  return "";
+}
+
+/// The radius of each live disk, in id order (as centers_of), for the oracles.
+inline std::vector<double> radii_of(const Packing& packing) {
+  std::vector<double> out;
+  for (DiskId id : packing.ids()) out.push_back(packing.radius(id));
+  return out;
+}
 
 }  // namespace disktune::test

@@ -31,23 +31,15 @@
 #include "disktune/tuning.h"
 #include "oracle/oracle.h"
 #include "oracle/planar_oracle.h"
+#include "planar_checks.h"
+#include "test_util.h"
 
 namespace disktune {
 namespace {
 
-using Clock = std::chrono::steady_clock;
+using test::message_of;
 
-// The message of the InvalidInput that f throws ("" and a failure if none).
-template <class F>
-std::string message_of(F&& f) {
-  try {
-    f();
-  } catch (const InvalidInput& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "no InvalidInput thrown";
-  return "";
-}
+using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
@@ -159,20 +151,7 @@ MeshFigures check_mesh(Packing packing, const PlanarDomain& domain, const oracle
   const BoundaryLoops loops = boundary_loops(packing, domain);
   const PlanarMesh mesh = constrained_delaunay(packing, loops);
   EXPECT_EQ(mesh.vertices.size(), packing.size());
-  double area = 0;
-  std::size_t outside = 0, flipped = 0;
-  for (const auto& t : mesh.triangles) {
-    const Vec2 a = mesh.vertices[t[0]], b = mesh.vertices[t[1]], c = mesh.vertices[t[2]];
-    const double twice = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
-    flipped += twice <= 0;
-    area += twice / 2;
-    const Vec2 g = (a + b + c) * (1.0 / 3);
-    outside += !oracle::even_odd_inside(od, g.x, g.y);
-  }
-  const double expected = oracle::domain_area(od);
-  EXPECT_NEAR(area, expected, 1e-9 * expected) << "the mesh does not tile the domain";
-  EXPECT_EQ(flipped, 0u) << "triangles not counterclockwise";
-  EXPECT_EQ(outside, 0u) << "triangle centroids outside the domain";
+  test::expect_mesh_tiles(mesh, od, 1e-6 * packing.max_radius());
 
   MeshFigures f;
   std::vector<Vec2> centers;

@@ -13,68 +13,25 @@
 #include "disktune/planar_domain.h"
 #include "loop_validation.h"
 #include "point_text.h"
+#include "../io/word_lines.h"
 
 namespace disktune {
 namespace {
 
 using detail::point_text;
 
-// Non-empty lines split into words, '#' comments removed; errors name file and line.
-class PolyLines {
+// The .poly file's lines: WordLines, plus "the next line, with at least `count` words".
+class PolyLines : public detail::WordLines {
  public:
-  PolyLines(std::istream& in, std::string path) : in_(in), path_(std::move(path)) {}
+  using WordLines::WordLines;
 
-  bool next(std::vector<std::string>& words) {
-    std::string text;
-    while (std::getline(in_, text)) {
-      ++line_;
-      text = text.substr(0, text.find('#'));
-      std::istringstream split(text);
-      words.clear();
-      for (std::string w; split >> w;) words.push_back(w);
-      if (!words.empty()) return true;
-    }
-    return false;
-  }
-
-  /// The next line, with at least `count` words; `what` says what was expected.
+  /// `what` says what was expected.
   std::vector<std::string> expect(std::size_t count, const std::string& what) {
     std::vector<std::string> words;
     if (!next(words)) fail("the file ends where " + what + " was expected");
     if (words.size() < count) fail("expected " + what + ", got too few numbers");
     return words;
   }
-
-  long long integer(const std::string& word) const {
-    long long v = 0;
-    const auto res = std::from_chars(word.data(), word.data() + word.size(), v);
-    if (res.ec != std::errc() || res.ptr != word.data() + word.size()) {
-      fail("expected a whole number, got '" + word + "'");
-    }
-    return v;
-  }
-
-  double number(const std::string& word) const {
-    double v = 0;
-    const auto res = std::from_chars(word.data(), word.data() + word.size(), v);
-    if (res.ec != std::errc() || res.ptr != word.data() + word.size() || !std::isfinite(v)) {
-      fail("expected a finite number, got '" + word + "'");
-    }
-    return v;
-  }
-
-  [[noreturn]] void fail(const std::string& what, std::size_t line = 0) const {
-    std::ostringstream msg;
-    msg << path_ << ", line " << (line ? line : line_) << ": " << what;
-    throw InvalidInput(msg.str());
-  }
-
-  std::size_t line() const { return line_; }
-
- private:
-  std::istream& in_;
-  std::string path_;
-  std::size_t line_ = 0;
 };
 
 struct PolyFile {

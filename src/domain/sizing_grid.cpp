@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "disktune/errors.h"
+#include "../io/word_lines.h"
 #include "disktune/sizing.h"
 
 namespace disktune {
@@ -43,61 +44,13 @@ struct Grid {
   }
 };
 
-// Non-empty lines split into words, '#' comments removed; errors name file and line.
-class GridReader {
- public:
-  GridReader(std::istream& in, const std::string& path) : in_(in), path_(path) {}
-
-  bool next(std::vector<std::string>& words) {
-    std::string text;
-    while (std::getline(in_, text)) {
-      ++line_;
-      text = text.substr(0, text.find('#'));
-      std::istringstream split(text);
-      words.clear();
-      for (std::string w; split >> w;) words.push_back(w);
-      if (!words.empty()) return true;
-    }
-    return false;
-  }
-
-  long long integer(const std::string& word, const char* what) const {
-    long long v = 0;
-    const auto res = std::from_chars(word.data(), word.data() + word.size(), v);
-    if (res.ec != std::errc() || res.ptr != word.data() + word.size()) {
-      fail(std::string("expected ") + what + " (a whole number), got '" + word + "'");
-    }
-    return v;
-  }
-
-  double number(const std::string& word, const char* what) const {
-    double v = 0;
-    const auto res = std::from_chars(word.data(), word.data() + word.size(), v);
-    if (res.ec != std::errc() || res.ptr != word.data() + word.size() || !std::isfinite(v)) {
-      fail(std::string("expected ") + what + " (a finite number), got '" + word + "'");
-    }
-    return v;
-  }
-
-  [[noreturn]] void fail(const std::string& what) const {
-    std::ostringstream msg;
-    msg << path_ << ", line " << line_ << ": " << what;
-    throw InvalidInput(msg.str());
-  }
-
- private:
-  std::istream& in_;
-  const std::string& path_;
-  std::size_t line_ = 0;
-};
-
 constexpr long long kMaxNodes = 100'000'000;  // 800 MB of radii; more is surely a mistake
 const char* kFormat =
     "; a sizing grid file is a line 'nx ny x0 y0 x1 y1' (nx, ny >= 2, x0 < x1, y0 < y1), "
     "then ny lines of nx positive radii, row j at y = y0 + j (y1 - y0) / (ny - 1)";
 
 Grid read_grid(std::istream& in, const std::string& path) {
-  GridReader reader(in, path);
+  detail::WordLines reader(in, path);
   std::vector<std::string> words;
   if (!reader.next(words)) reader.fail(std::string("the file has no header line") + kFormat);
   if (words.size() != 6) {
