@@ -5,6 +5,7 @@
 // must agree.
 
 #include "oracle/oracle.h"
+#include "oracle/oracle_lattices.h"
 
 #include <gtest/gtest.h>
 
@@ -21,33 +22,12 @@ using oracle::Box;
 using oracle::Method;
 using oracle::Points;
 using oracle::Report;
+using oracle::test::hex;
+using oracle::test::Lattice;
+using oracle::test::rect;
 
 const double kSqrt2 = std::sqrt(2.0);
 const double kSqrt3 = std::sqrt(3.0);
-
-struct Lattice {
-  Box box;
-  Points pts;
-  double s;  // spacing
-};
-
-// Hexagonal lattice tiling the torus: m columns of spacing s = width/m, `rows` (even)
-// rows at height h = s*sqrt(3)/2, odd rows shifted by s/2.
-Lattice hex(int m, int rows, double width = 1.0) {
-  const double s = width / m, h = s * kSqrt3 / 2;
-  Lattice L{{width, rows * h}, {}, s};
-  for (int row = 0; row < rows; ++row)
-    for (int col = 0; col < m; ++col) L.pts.push_back({s * (col + 0.5 * (row % 2)), row * h});
-  return L;
-}
-
-// Rectangular lattice: mx by my points with spacings sx, sy.
-Lattice rect(int mx, int my, double sx, double sy) {
-  Lattice L{{mx * sx, my * sy}, {}, std::min(sx, sy)};
-  for (int y = 0; y < my; ++y)
-    for (int x = 0; x < mx; ++x) L.pts.push_back({x * sx, y * sy});
-  return L;
-}
 
 // Minimum-image distance on the torus.
 double torus_dist(const Box& b, std::array<double, 2> p, std::array<double, 2> q) {

@@ -15,9 +15,14 @@
 #include <vector>
 
 #include "oracle/oracle.h"
+#include "oracle/oracle_lattices.h"
 #include "oracle/planar_oracle.h"
 
 namespace {
+
+using oracle::test::hex;
+using oracle::test::Lattice;
+using oracle::test::rect;
 
 using oracle::Box;
 using oracle::Domain;
@@ -443,28 +448,6 @@ void expect_identical(const Report& a, const Report& b) {
     EXPECT_EQ(a.uncovered[k].why, b.uncovered[k].why);
   }
   EXPECT_EQ(a.summary(), b.summary());
-}
-
-// The lattices of oracle_test.cpp.
-struct Lattice {
-  Box box;
-  Points pts;
-  double s;
-};
-
-Lattice hex(int m, int rows) {
-  const double s = 1.0 / m, h = s * kSqrt3 / 2;
-  Lattice L{{1.0, rows * h}, {}, s};
-  for (int row = 0; row < rows; ++row)
-    for (int col = 0; col < m; ++col) L.pts.push_back({s * (col + 0.5 * (row % 2)), row * h});
-  return L;
-}
-
-Lattice rect(int mx, int my, double sx, double sy) {
-  Lattice L{{mx * sx, my * sy}, {}, std::min(sx, sy)};
-  for (int y = 0; y < my; ++y)
-    for (int x = 0; x < mx; ++x) L.pts.push_back({x * sx, y * sy});
-  return L;
 }
 
 TEST(OracleVarying, OneRadiusGivesIdenticalReportsBothWays) {

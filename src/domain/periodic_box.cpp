@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "disktune/errors.h"
+#include "radius_limits.h"
 
 namespace disktune {
 
@@ -26,22 +27,9 @@ Vec2 PeriodicBox::random_point(Rng& rng) const {
 }
 
 void PeriodicBox::validate_radius(double r) const {
-  if (!(std::isfinite(r) && r > 0)) {
-    std::ostringstream msg;
-    msg << "radius must be a finite positive number, got " << r;
-    throw InvalidInput(msg.str());
-  }
-  // A maximal packing holds about 0.7 A / r^2 disks: past 2e8 (some 20 GB) the request
-  // cannot be meant, and the grids would not fit in memory.
-  constexpr double kMaxDisks = 2e8;
-  const double expected = 0.7 * area() / (r * r);
-  if (expected > kMaxDisks) {
-    std::ostringstream msg;
-    msg << "radius " << r << " is too small for the " << width() << " x " << height()
-        << " box: a maximal packing would hold about " << expected << " disks, more than the "
-        << kMaxDisks << " this machine can hold; use r >= " << std::sqrt(0.7 * area() / kMaxDisks);
-    throw InvalidInput(msg.str());
-  }
+  std::ostringstream box;
+  box << "the " << width() << " x " << height() << " box";
+  detail::check_radius_for_area(r, area(), box.str());
   const double side = std::min(width(), height());
   if (!(2 * r < side)) {
     std::ostringstream msg;

@@ -12,6 +12,7 @@
 #include "disktune/errors.h"
 #include "disktune/tolerance.h"
 #include "loop_validation.h"
+#include "radius_limits.h"
 #include "point_text.h"
 
 namespace disktune {
@@ -80,23 +81,9 @@ Vec2 PlanarDomain::random_point(Rng& rng) const {
 }
 
 void PlanarDomain::validate_radius(double r) const {
-  if (!(std::isfinite(r) && r > 0)) {
-    std::ostringstream msg;
-    msg << "radius must be a finite positive number, got " << r;
-    throw InvalidInput(msg.str());
-  }
-  // As for the periodic box: past about 2e8 disks (0.7 A / r^2) the request cannot be
-  // meant, and the grids would not fit in memory.
-  constexpr double kMaxDisks = 2e8;
-  const double expected = 0.7 * area_ / (r * r);
-  if (expected > kMaxDisks) {
-    std::ostringstream msg;
-    msg << "radius " << r << " is too small for this domain of area " << area_
-        << ": a maximal packing would hold about " << expected << " disks, more than the "
-        << kMaxDisks << " this machine can hold; use r >= "
-        << round_4_digits(std::sqrt(0.7 * area_ / kMaxDisks), true);
-    throw InvalidInput(msg.str());
-  }
+  std::ostringstream domain;
+  domain << "this domain of area " << area_;
+  detail::check_radius_for_area(r, area_, domain.str());
   // A disk sits on every corner: corners closer than r would conflict. Bin the corners
   // in cells of side r (sorted keys, so tiny r costs no memory) and compare neighbours.
   struct Corner {
