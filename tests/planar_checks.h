@@ -11,9 +11,20 @@
 #include <vector>
 
 #include "disktune/mesh.h"
+#include "disktune/planar_domain.h"
 #include "oracle/planar_oracle.h"
 
 namespace disktune::test {
+
+/// The domain as the oracle sees it: plain coordinates.
+inline oracle::Domain oracle_domain(const PlanarDomain& d) {
+  oracle::Domain out;
+  for (const auto& loop : d.loops()) {
+    out.loops.emplace_back();
+    for (const Vec2 v : loop) out.loops.back().push_back({v.x, v.y});
+  }
+  return out;
+}
 
 /// The mesh must tile the domain exactly: triangle areas sum to the shoelace area
 /// (1e-9 relative), every triangle counterclockwise with its centroid inside, and every

@@ -31,6 +31,8 @@
 namespace disktune {
 namespace {
 
+using test::oracle_domain;
+
 constexpr double kPi = 3.14159265358979323846;
 
 struct DomainFile {
@@ -60,14 +62,6 @@ double area_in_header(const std::string& path) {
   return std::nan("");
 }
 
-oracle::Domain oracle_domain(const PlanarDomain& d) {
-  oracle::Domain out;
-  for (const auto& loop : d.loops()) {
-    out.loops.emplace_back();
-    for (const Vec2 v : loop) out.loops.back().push_back({v.x, v.y});
-  }
-  return out;
-}
 
 // A radius for about 1000 disks at the MPS area fraction of the open plane (~0.55; the
 // boundary disks push it to ~0.6, so ~1150), rounded down to two significant digits,

@@ -37,6 +37,8 @@
 namespace disktune {
 namespace {
 
+using test::oracle_domain;
+
 using test::message_of;
 
 using Clock = std::chrono::steady_clock;
@@ -49,14 +51,6 @@ std::shared_ptr<const PlanarDomain> load(const std::string& name) {
   return std::make_shared<const PlanarDomain>(read_poly(std::string(DISKTUNE_DATA_DIR) + "/domains/" + name + ".poly"));
 }
 
-oracle::Domain oracle_domain(const PlanarDomain& d) {
-  oracle::Domain out;
-  for (const auto& loop : d.loops()) {
-    out.loops.emplace_back();
-    for (const Vec2 v : loop) out.loops.back().push_back({v.x, v.y});
-  }
-  return out;
-}
 
 // Every disk must carry the sizing's radius at its own center: the oracle is given the
 // packing's radii, so they are first checked against the sizing itself. Returns the
