@@ -181,6 +181,7 @@ expect sizing-neither 2 "one of the two" -- "$bin" sample --output z.csv
 expect sizing-syntax 2 "position" -- "$bin" sample --domain hole.poly --sizing "0.03 + * x"
 expect sizing-steep 2 "gradation" -- "$bin" sample --domain hole.poly --sizing "0.01 + 0.8*x" --output z.csv
 absent sizing-steep-output z.csv
+expect sizing-warning 0 "warning: the sizing's gradation L = 0.4" -- "$bin" sample --domain hole.poly --sizing "0.01 + 0.4*x" --output z.csv
 expect sizing-crystal 2 "crystal growth needs one radius" -- "$bin" tune --domain hole.poly --sizing "0.03 + 0.03*x" --input v.csv --target-fraction 0.8 --method crystal
 
 # the sweep table (tiny)

@@ -71,6 +71,11 @@ struct SizingStats {
 SizingStats measure_sizing(const Sizing& sizing, const Frame& frame, const PlanarDomain* domain,
                            int samples = 250000);
 
+/// The smallest Delaunay angle (degrees) a maximal packing guarantees for a sizing of
+/// Lipschitz constant L: asin((1 - 2L) / (2 (1 + L))), 30 for L = 0, none (0) from 1/2
+/// on (docs/sizing.md).
+double angle_bound_degrees(double lipschitz);
+
 /// The gradation limit: with L >= 1/2 no minimum angle is guaranteed (sin of the smallest
 /// Delaunay angle >= (1 - 2L) / (2 (1 + L)), see docs/sizing.md). Throws InvalidInput
 /// with L and the bound when stats.lipschitz >= limit.

@@ -2,6 +2,7 @@
 #include "command_domain.h"
 
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 
 #include "disktune/boundary.h"
@@ -29,6 +30,14 @@ CommandDomain open_domain(const DomainArgs& args) {
     d.box ? d.box->validate_radius(d.radius) : d.planar->validate_radius(d.radius);
   } else {
     d.sizing = std::make_shared<const Sizing>(parse_sizing(args.sizing, d.planar));
+    SizingStats stats;
+    sized_packing(d.box ? d.box->frame() : d.planar->frame(), d.planar, d.sizing, &stats);  // refuses L >= 1/2
+    if (stats.lipschitz > 0.25) {
+      std::fprintf(stderr,
+                   "disktune: warning: the sizing's gradation L = %.3g is above 0.25: the smallest "
+                   "Delaunay angle is only guaranteed to be %.1f degrees (docs/sizing.md)\n",
+                   stats.lipschitz, angle_bound_degrees(stats.lipschitz));
+    }
   }
   return d;
 }

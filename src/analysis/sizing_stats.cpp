@@ -142,7 +142,7 @@ void check_gradation(const SizingStats& stats, double limit) {
     why = "with L >= 1/2 a maximal packing has no angle bound (sin of the smallest Delaunay "
           "angle >= (1 - 2L) / (2 (1 + L)), which is not positive)";
   } else {
-    const double degrees = std::asin((1 - 2 * L) / (2 * (1 + L))) * 180 / kPi;
+    const double degrees = angle_bound_degrees(L);
     why = "the smallest Delaunay angle is then only guaranteed to be " + short_number(degrees) +
           " degrees (sin >= (1 - 2L) / (2 (1 + L)))";
   }
@@ -178,6 +178,11 @@ double density_integral(const Sizing& sizing, const Frame& frame, const PlanarDo
   }
   const double area = domain ? domain->area() : frame.extent.x * frame.extent.y;
   return area * sum / static_cast<double>(inside);
+}
+
+double angle_bound_degrees(double lipschitz) {
+  const double L = lipschitz;
+  return L >= 0.5 ? 0.0 : std::asin((1 - 2 * L) / (2 * (1 + L))) * 180 / kPi;
 }
 
 std::size_t count_for_density(double eta, const Sizing& sizing, const Frame& frame,
