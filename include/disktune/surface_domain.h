@@ -1,0 +1,75 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// A curved surface to pack disks on: a triangle mesh in space, validated once so later
+// steps can rely on a consistently oriented 2-manifold (possibly with boundary).
+// Plain arrays only; CGAL and OpenMesh meshes come in through the adapter headers
+// disktune/cgal/surface_from_cgal.h and disktune/openmesh/surface_from_openmesh.h.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "disktune/vec3.h"
+
+namespace disktune {
+
+class SurfaceDomain {
+ public:
+  using Triangle = std::array<std::size_t, 3>;
+
+  /// Throws InvalidInput, naming the face, edge or vertex and its position, when a
+  /// triangle names a missing vertex or has no area (within 1e-12 of its squared longest
+  /// edge), an edge lies in more than two triangles, two triangles sharing an edge run it
+  /// the same way (inconsistent orientation), a vertex's triangles form more than one fan
+  /// (bow tie), or a vertex lies in no triangle; or when there are no triangles.
+  SurfaceDomain(std::vector<Vec3> vertices, std::vector<Triangle> triangles);
+
+  const std::vector<Vec3>& vertices() const { return vertices_; }
+  const std::vector<Triangle>& triangles() const { return triangles_; }
+  std::size_t edge_count() const { return edge_count_; }
+  /// The open boundaries, each an ordered vertex list run with the surface on its left
+  /// (seen from the side the triangles' normals point to); empty for a closed surface.
+  const std::vector<std::vector<std::size_t>>& boundary_loops() const { return loops_; }
+  bool is_closed() const { return loops_.empty(); }
+
+  /// Connected components (through shared vertices), numbered by their lowest triangle.
+  std::size_t component_count() const { return genus_.size(); }
+  /// The component of each triangle.
+  const std::vector<std::size_t>& triangle_component() const { return component_; }
+  /// Genus of each component, from Euler's formula V - E + F = 2 - 2g - b.
+  const std::vector<int>& component_genus() const { return genus_; }
+  /// The sum of the components' genera.
+  int genus() const;
+
+  Vec3 bbox_min() const { return lo_; }
+  Vec3 bbox_max() const { return hi_; }
+  double area() const { return area_; }
+
+ private:
+  std::vector<Vec3> vertices_;
+  std::vector<Triangle> triangles_;
+  std::size_t edge_count_ = 0;
+  std::vector<std::vector<std::size_t>> loops_;
+  std::vector<std::size_t> component_;
+  std::vector<int> genus_;
+  Vec3 lo_, hi_;
+  double area_ = 0;
+};
+
+/// A surface from a mesh file (.off, .obj, .ply, .stl, by extension) read through CGAL.
+/// OFF files may start with '#' comments. STL files repeat each corner per facet, so
+/// points with equal coordinates are merged first. Faces are then turned, component by
+/// component, to agree with the first triangle's orientation where that is possible.
+/// Throws IoError when the file cannot be read and InvalidInput when it is no valid
+/// surface (see the constructor).
+SurfaceDomain read_surface(const std::string& path);
+
+/// The same through OpenMesh's readers (OpenMesh::IO::read_mesh), without reorienting
+/// or merging. OpenMesh rejects OFF files that start with '#' comments: those throw
+/// IoError suggesting read_surface. OpenMesh's OFF reader parses coordinates as float
+/// (about 7 digits), and it may split non-manifold input itself, with a warning on
+/// stderr, before disktune sees it.
+SurfaceDomain read_surface_openmesh(const std::string& path);
+
+}  // namespace disktune

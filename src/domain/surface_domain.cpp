@@ -1,0 +1,331 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Validation and derived data of a triangulated surface, and its CGAL-based reader.
+#include "disktune/surface_domain.h"
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <map>
+#include <numeric>
+#include <sstream>
+
+#include "../io/number_text.h"
+#include "../io/polygon_soup.h"
+#include "disktune/errors.h"
+
+namespace disktune {
+namespace {
+
+using Triangle = SurfaceDomain::Triangle;
+
+std::string vertex_text(const std::vector<Vec3>& points, std::size_t v) {
+  std::ostringstream out;
+  out << "vertex " << v << " (";
+  detail::put_number(out, points[v].x);
+  out << ", ";
+  detail::put_number(out, points[v].y);
+  out << ", ";
+  detail::put_number(out, points[v].z);
+  out << ')';
+  return out.str();
+}
+
+std::string triangle_text(const std::vector<Vec3>& points, const Triangle& tri, std::size_t t) {
+  return "triangle " + std::to_string(t) + " (" + vertex_text(points, tri[0]) + ", " +
+         vertex_text(points, tri[1]) + ", " + vertex_text(points, tri[2]) + ")";
+}
+
+// One side of an edge: the triangle that holds it and which way it runs there.
+struct HalfEdge {
+  std::size_t lo, hi, tri;
+  bool forward;  // runs lo -> hi in its triangle
+};
+
+// Every triangle's three edges, sorted so that the sides of one edge are adjacent.
+std::vector<HalfEdge> sorted_half_edges(const std::vector<Triangle>& tris) {
+  std::vector<HalfEdge> out;
+  out.reserve(3 * tris.size());
+  for (std::size_t t = 0; t < tris.size(); ++t) {
+    for (int k = 0; k < 3; ++k) {
+      const std::size_t a = tris[t][k], b = tris[t][(k + 1) % 3];
+      out.push_back({std::min(a, b), std::max(a, b), t, a < b});
+    }
+  }
+  std::sort(out.begin(), out.end(), [](const HalfEdge& p, const HalfEdge& q) {
+    return std::tie(p.lo, p.hi, p.tri) < std::tie(q.lo, q.hi, q.tri);
+  });
+  return out;
+}
+
+// Calls f(first, last) for each run of half-edges on one edge.
+template <class F>
+void for_each_edge(const std::vector<HalfEdge>& half, F&& f) {
+  for (std::size_t i = 0; i < half.size();) {
+    std::size_t j = i + 1;
+    while (j < half.size() && half[j].lo == half[i].lo && half[j].hi == half[i].hi) ++j;
+    f(i, j);
+    i = j;
+  }
+}
+
+struct UnionFind {
+  std::vector<std::size_t> parent;
+  explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
+  std::size_t find(std::size_t i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  }
+  bool unite(std::size_t a, std::size_t b) {
+    a = find(a), b = find(b);
+    if (a == b) return false;
+    parent[a] = b;
+    return true;
+  }
+};
+
+void check_triangles(const std::vector<Vec3>& points, const std::vector<Triangle>& tris) {
+  if (tris.empty()) throw InvalidInput("the surface has no triangles; give at least one");
+  for (std::size_t t = 0; t < tris.size(); ++t) {
+    const Triangle& tri = tris[t];
+    for (const std::size_t v : tri) {
+      if (v >= points.size()) {
+        throw InvalidInput("triangle " + std::to_string(t) + " names vertex " + std::to_string(v) +
+                           ", but there are only " + std::to_string(points.size()) +
+                           " vertices; fix the face's indices");
+      }
+    }
+    const Vec3 a = points[tri[0]], b = points[tri[1]], c = points[tri[2]];
+    // Relative to the longest edge, so the test does not depend on the model's units.
+    const double longest =
+        std::max({squared_norm(b - a), squared_norm(c - b), squared_norm(a - c)});
+    if (tri[0] == tri[1] || tri[1] == tri[2] || tri[2] == tri[0] ||
+        norm(cross(b - a, c - a)) <= 1e-12 * longest) {
+      throw InvalidInput(triangle_text(points, tri, t) +
+                         " has zero area; remove degenerate triangles from the surface");
+    }
+  }
+}
+
+// Throws for an edge in more than two triangles or run the same way by both.
+void check_edges(const std::vector<Vec3>& points, const std::vector<HalfEdge>& half) {
+  for_each_edge(half, [&](std::size_t i, std::size_t j) {
+    const HalfEdge& e = half[i];
+    const std::string edge = "the edge between " + vertex_text(points, e.lo) + " and " +
+                             vertex_text(points, e.hi);
+    if (j - i > 2) {
+      std::string list;
+      for (std::size_t k = i; k < j; ++k) list += (k > i ? ", " : "") + std::to_string(half[k].tri);
+      throw InvalidInput(edge + " lies in " + std::to_string(j - i) + " triangles (" + list +
+                         "), a non-manifold edge; a surface edge may border at most two "
+                         "triangles");
+    }
+    if (j - i == 2 && half[i].forward == half[i + 1].forward) {
+      throw InvalidInput("triangles " + std::to_string(half[i].tri) + " and " +
+                         std::to_string(half[i + 1].tri) + " both run " + edge +
+                         " the same way: the surface is not consistently oriented; flip one "
+                         "of them (or the surface is not orientable)");
+    }
+  });
+}
+
+// Throws for a vertex in no triangle or whose triangles form more than one fan.
+void check_vertices(const std::vector<Vec3>& points, const std::vector<Triangle>& tris) {
+  std::vector<std::vector<std::size_t>> around(points.size());
+  for (std::size_t t = 0; t < tris.size(); ++t) {
+    for (const std::size_t v : tris[t]) around[v].push_back(t);
+  }
+  std::vector<std::size_t> nb;
+  for (std::size_t v = 0; v < points.size(); ++v) {
+    if (around[v].empty()) {
+      throw InvalidInput(vertex_text(points, v) +
+                         " lies in no triangle; remove unused vertices from the surface");
+    }
+    // The triangles around v form one fan iff its link (the opposite edges) is connected.
+    nb.clear();
+    for (const std::size_t t : around[v]) {
+      for (const std::size_t w : tris[t]) {
+        if (w != v) nb.push_back(w);
+      }
+    }
+    std::sort(nb.begin(), nb.end());
+    nb.erase(std::unique(nb.begin(), nb.end()), nb.end());
+    const auto local = [&](std::size_t w) {
+      return static_cast<std::size_t>(std::lower_bound(nb.begin(), nb.end(), w) - nb.begin());
+    };
+    UnionFind link(nb.size());
+    std::size_t pieces = nb.size();
+    for (const std::size_t t : around[v]) {
+      std::size_t other[2], n = 0;
+      for (const std::size_t w : tris[t]) {
+        if (w != v) other[n++] = w;
+      }
+      if (link.unite(local(other[0]), local(other[1]))) --pieces;
+    }
+    if (pieces > 1) {
+      throw InvalidInput(vertex_text(points, v) + " joins " + std::to_string(pieces) +
+                         " separate fans of triangles (a non-manifold, bow-tie vertex); give "
+                         "each fan its own copy of the vertex");
+    }
+  }
+}
+
+// The boundary edges (one triangle only) chained into loops, surface on their left.
+std::vector<std::vector<std::size_t>> chain_boundary(std::size_t vertex_count,
+                                                     const std::vector<HalfEdge>& half) {
+  constexpr std::size_t none = static_cast<std::size_t>(-1);
+  std::vector<std::size_t> next(vertex_count, none);
+  for_each_edge(half, [&](std::size_t i, std::size_t j) {
+    if (j - i != 1) return;
+    const HalfEdge& e = half[i];
+    // In triangle (a, b, c) the edge a->b has the triangle on its left.
+    if (e.forward) next[e.lo] = e.hi; else next[e.hi] = e.lo;
+  });
+  std::vector<std::vector<std::size_t>> loops;
+  for (std::size_t start = 0; start < vertex_count; ++start) {
+    if (next[start] == none) continue;
+    std::vector<std::size_t> loop;
+    for (std::size_t v = start; next[v] != none;) {
+      loop.push_back(v);
+      const std::size_t w = next[v];
+      next[v] = none;  // each vertex has one outgoing boundary edge (one fan), used once
+      v = w;
+    }
+    loops.push_back(std::move(loop));
+  }
+  return loops;
+}
+
+}  // namespace
+
+SurfaceDomain::SurfaceDomain(std::vector<Vec3> vertices, std::vector<Triangle> triangles)
+    : vertices_(std::move(vertices)), triangles_(std::move(triangles)) {
+  check_triangles(vertices_, triangles_);
+  const std::vector<HalfEdge> half = sorted_half_edges(triangles_);
+  check_edges(vertices_, half);
+  check_vertices(vertices_, triangles_);
+  for_each_edge(half, [&](std::size_t, std::size_t) { ++edge_count_; });
+  loops_ = chain_boundary(vertices_.size(), half);
+
+  // Components through shared vertices (edges, after the fan check), numbered in
+  // triangle order; then Euler's formula per component.
+  UnionFind uf(vertices_.size());
+  for (const Triangle& t : triangles_) uf.unite(t[0], t[1]), uf.unite(t[1], t[2]);
+  std::vector<std::size_t> of_root(vertices_.size(), static_cast<std::size_t>(-1));
+  component_.resize(triangles_.size());
+  for (std::size_t t = 0; t < triangles_.size(); ++t) {
+    std::size_t& c = of_root[uf.find(triangles_[t][0])];
+    if (c == static_cast<std::size_t>(-1)) c = genus_.size(), genus_.push_back(0);
+    component_[t] = c;
+  }
+  const auto comp_of = [&](std::size_t v) { return of_root[uf.find(v)]; };
+  std::vector<long long> euler(genus_.size(), 0), borders(genus_.size(), 0);
+  for (std::size_t v = 0; v < vertices_.size(); ++v) ++euler[comp_of(v)];
+  for_each_edge(half, [&](std::size_t i, std::size_t) { --euler[comp_of(half[i].lo)]; });
+  for (std::size_t t = 0; t < triangles_.size(); ++t) ++euler[component_[t]];
+  for (const auto& loop : loops_) ++borders[comp_of(loop.front())];
+  for (std::size_t c = 0; c < genus_.size(); ++c) {
+    genus_[c] = static_cast<int>((2 - borders[c] - euler[c]) / 2);
+  }
+
+  lo_ = hi_ = vertices_.front();
+  for (const Vec3& p : vertices_) {
+    lo_ = {std::min(lo_.x, p.x), std::min(lo_.y, p.y), std::min(lo_.z, p.z)};
+    hi_ = {std::max(hi_.x, p.x), std::max(hi_.y, p.y), std::max(hi_.z, p.z)};
+  }
+  for (const Triangle& t : triangles_) {
+    const Vec3 a = vertices_[t[0]];
+    area_ += 0.5 * norm(cross(vertices_[t[1]] - a, vertices_[t[2]] - a));
+  }
+}
+
+int SurfaceDomain::genus() const { return std::accumulate(genus_.begin(), genus_.end(), 0); }
+
+namespace {
+
+// STL repeats each corner in every facet: one index per distinct position.
+void merge_equal_points(std::vector<Vec3>& points, std::vector<Triangle>& tris) {
+  std::map<std::array<double, 3>, std::size_t> index;
+  std::vector<std::size_t> to(points.size());
+  std::vector<Vec3> merged;
+  for (std::size_t v = 0; v < points.size(); ++v) {
+    const auto [it, added] = index.emplace(std::array<double, 3>{points[v].x, points[v].y,
+                                                                 points[v].z},
+                                           merged.size());
+    if (added) merged.push_back(points[v]);
+    to[v] = it->second;
+  }
+  for (Triangle& t : tris) {
+    for (std::size_t& v : t) v = to[v];
+  }
+  points = std::move(merged);
+}
+
+// Files often mix orientations: flip triangles, spreading from the first of each
+// component across edges of two triangles, to agree with their neighbours. A
+// non-orientable surface keeps a conflict, which the constructor then reports.
+void orient_consistently(std::vector<Triangle>& tris) {
+  const std::vector<HalfEdge> half = sorted_half_edges(tris);
+  struct Link {
+    std::size_t to;
+    bool same_way;  // both triangles run the shared edge the same way
+  };
+  std::vector<std::vector<Link>> links(tris.size());
+  for_each_edge(half, [&](std::size_t i, std::size_t j) {
+    if (j - i != 2) return;
+    const bool same = half[i].forward == half[i + 1].forward;
+    links[half[i].tri].push_back({half[i + 1].tri, same});
+    links[half[i + 1].tri].push_back({half[i].tri, same});
+  });
+  std::vector<char> seen(tris.size(), 0), flip(tris.size(), 0);
+  std::vector<std::size_t> stack;
+  for (std::size_t s = 0; s < tris.size(); ++s) {
+    if (seen[s]) continue;
+    seen[s] = 1;
+    stack.push_back(s);
+    while (!stack.empty()) {
+      const std::size_t t = stack.back();
+      stack.pop_back();
+      for (const Link& l : links[t]) {
+        if (seen[l.to]) continue;
+        seen[l.to] = 1;
+        flip[l.to] = flip[t] ^ static_cast<char>(l.same_way);
+        stack.push_back(l.to);
+      }
+    }
+  }
+  for (std::size_t t = 0; t < tris.size(); ++t) {
+    if (flip[t]) std::swap(tris[t][1], tris[t][2]);
+  }
+}
+
+}  // namespace
+
+SurfaceDomain read_surface(const std::string& path) {
+  const detail::PolygonSoup soup = detail::read_polygon_soup(path);
+  std::vector<Vec3> points;
+  points.reserve(soup.points.size());
+  for (const auto& p : soup.points) points.push_back({p[0], p[1], p[2]});
+  std::vector<Triangle> tris;
+  tris.reserve(soup.polygons.size());
+  for (std::size_t f = 0; f < soup.polygons.size(); ++f) {
+    const auto& poly = soup.polygons[f];
+    if (poly.size() != 3) {
+      throw InvalidInput("face " + std::to_string(f) + " of " + path + " has " +
+                         std::to_string(poly.size()) +
+                         " corners; a surface domain needs triangles: triangulate the mesh first");
+    }
+    tris.push_back({poly[0], poly[1], poly[2]});
+  }
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (ext == ".stl") merge_equal_points(points, tris);
+  orient_consistently(tris);
+  try {
+    return SurfaceDomain(std::move(points), std::move(tris));
+  } catch (const InvalidInput& e) {
+    throw InvalidInput(path + ": " + e.what());
+  }
+}
+
+}  // namespace disktune
