@@ -130,6 +130,13 @@ grep -q '"spectrum"' ns.json && { echo "FAIL --no-spectrum wrote a spectrum"; fa
 expect report-spectrum-window 0 "window \|k\| < 9 " -- "$bin" report q.csv --radius 0.05 --spectrum-window 9
 expect report-spectrum-window-bad 2 "too small" -- "$bin" report q.csv --radius 0.05 --spectrum-window 1
 
+# an output that is a pipe (or a device such as /dev/null) is written into, not replaced
+mkfifo pipe.csv
+timeout 60 cat pipe.csv > piped.csv &  # a regression must fail, not hang
+expect output-is-a-pipe 0 "^sample: " -- "$bin" sample --radius 0.1 --output pipe.csv
+wait
+[ -p pipe.csv ] && grep -qx "x,y,r" <(head -n 1 piped.csv) && pass=$((pass + 1)) || { echo "FAIL output-is-a-pipe: the pipe was replaced or nothing came through"; fails=$((fails + 1)); }
+
 # planar domains: a square with a square hole, in Triangle's .poly format
 cat > hole.poly <<'POLY'
 # unit square with a centered hole of side 0.4

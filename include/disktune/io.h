@@ -17,7 +17,8 @@ namespace disktune {
 
 /// Writes `path` by calling `write` on a temporary sibling file, then renaming it into
 /// place. Throws IoError (naming the path and the reason) and removes the temporary on
-/// any failure, including an exception thrown by `write`.
+/// any failure, including an exception thrown by `write`. A path that is a device or a
+/// pipe (/dev/null, a FIFO) is written straight into instead, never replaced.
 void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& write);
 
 /// CSV with header `x,y,r`, one live disk a line in id order, each number in the

@@ -2,6 +2,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <random>
 
@@ -12,6 +13,19 @@ namespace disktune {
 
 void write_file_atomically(const std::string& path,
                            const std::function<void(std::ostream&)>& write) {
+  // A device or a pipe (/dev/null, /dev/stdout, a FIFO) is written straight into:
+  // renaming a temporary over it would replace the device with a plain file.
+  std::error_code ec;
+  const auto kind = std::filesystem::status(path, ec);
+  if (!ec && std::filesystem::exists(kind) && !std::filesystem::is_regular_file(kind) &&
+      !std::filesystem::is_directory(kind)) {
+    std::ofstream out(path, std::ios::binary);
+    if (!out) throw IoError("cannot write '" + path + "': " + std::strerror(errno));
+    write(out);
+    out.flush();
+    if (!out) throw IoError("writing '" + path + "' failed");
+    return;
+  }
   // A per-call suffix keeps concurrent writers to the same path apart.
   const std::string tmp = path + ".tmp" + std::to_string(std::random_device{}() & 0xffffff);
   {

@@ -1,0 +1,55 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "disktune/surface_geometry.h"
+
+#include <cmath>
+#include <sstream>
+
+#include "disktune/errors.h"
+
+namespace disktune {
+
+TrianglePlane::TrianglePlane(Vec3 a, Vec3 b, Vec3 c) : origin_(a) {
+  const Vec3 ab = b - a, ac = c - a, n = cross(ab, ac);
+  const double len = norm(ab), area2 = norm(n);
+  if (!(len > 0 && area2 > 1e-14 * std::max(squared_norm(ab), squared_norm(ac)))) {
+    std::ostringstream msg;
+    msg << "degenerate triangle (" << a.x << ", " << a.y << ", " << a.z << "), (" << b.x << ", "
+        << b.y << ", " << b.z << "), (" << c.x << ", " << c.y << ", " << c.z << "): it spans no plane";
+    throw InvalidInput(msg.str());
+  }
+  ex_ = ab * (1 / len);
+  normal_ = n * (1 / area2);
+  ey_ = cross(normal_, ex_);
+  corner_[0] = {0, 0};
+  corner_[1] = {len, 0};
+  corner_[2] = to_plane(c);
+}
+
+bool TrianglePlane::contains(Vec2 q, double tol) const {
+  // Inside the three edge lines (counterclockwise), each pushed out by tol.
+  for (int k = 0; k < 3; ++k) {
+    const Vec2 p = corner_[k], e = corner_[(k + 1) % 3] - p;
+    if (cross(e, q - p) < -tol * norm(e)) return false;
+  }
+  return true;
+}
+
+std::optional<Circle> TrianglePlane::section(Vec3 center, double r) const {
+  const double h = height(center);
+  const double rho2 = r * r - h * h;
+  // A sphere touching the plane within rounding gives its touching point.
+  if (rho2 < -1e-12 * r * r) return std::nullopt;
+  return Circle{to_plane(center), std::sqrt(std::max(rho2, 0.0))};
+}
+
+void sphere_corners_in_triangle(const TrianglePlane& t, Vec3 c1, double r1, Vec3 c2, double r2,
+                                double tol, std::vector<Vec3>& out) {
+  const auto s1 = t.section(c1, r1), s2 = t.section(c2, r2);
+  if (!s1 || !s2) return;
+  const CircleIntersection x = intersect_circles(s1->center, s1->radius, s2->center, s2->radius);
+  for (int k = 0; k < x.count; ++k) {
+    if (t.contains(x.points[k], tol)) out.push_back(t.to_space(x.points[k]));
+  }
+}
+
+}  // namespace disktune
