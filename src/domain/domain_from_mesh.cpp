@@ -10,6 +10,7 @@
 
 #include "../io/polygon_soup.h"
 #include "disktune/errors.h"
+#include "half_edges.h"
 #include "disktune/planar_domain.h"
 #include "loop_validation.h"
 #include "point_text.h"
@@ -52,27 +53,14 @@ std::vector<std::array<std::size_t, 3>> oriented_triangles(
 // boundary edge once, with the domain on its left.
 std::vector<std::size_t> boundary_successors(const std::vector<Vec2>& points,
                                              const std::vector<std::array<std::size_t, 3>>& tris) {
-  struct Edge {
-    std::size_t lo, hi, tri;
-    bool forward;  // runs lo -> hi in its triangle
-  };
-  std::vector<Edge> edges;
-  for (std::size_t t = 0; t < tris.size(); ++t) {
-    for (int e = 0; e < 3; ++e) {
-      const std::size_t u = tris[t][e], v = tris[t][(e + 1) % 3];
-      edges.push_back({std::min(u, v), std::max(u, v), t, u < v});
-    }
-  }
-  std::sort(edges.begin(), edges.end(), [](const Edge& a, const Edge& b) {
-    return std::tie(a.lo, a.hi, a.tri) < std::tie(b.lo, b.hi, b.tri);
-  });
+  const std::vector<detail::HalfEdge> edges = detail::sorted_half_edges(tris);
   const std::size_t none = points.size();
   std::vector<std::size_t> next(points.size(), none);
   for (std::size_t g = 0; g < edges.size();) {
     std::size_t end = g;
     while (end < edges.size() && edges[end].lo == edges[g].lo && edges[end].hi == edges[g].hi)
       ++end;
-    const Edge& e = edges[g];
+    const detail::HalfEdge& e = edges[g];
     const std::string between =
         "the edge between " + vertex_text(points, e.lo) + " and " + vertex_text(points, e.hi);
     if (end - g > 2) {

@@ -12,6 +12,7 @@
 #include "../io/number_text.h"
 #include "../io/polygon_soup.h"
 #include "disktune/errors.h"
+#include "half_edges.h"
 
 namespace disktune {
 namespace {
@@ -35,27 +36,8 @@ std::string triangle_text(const std::vector<Vec3>& points, const Triangle& tri, 
          vertex_text(points, tri[1]) + ", " + vertex_text(points, tri[2]) + ")";
 }
 
-// One side of an edge: the triangle that holds it and which way it runs there.
-struct HalfEdge {
-  std::size_t lo, hi, tri;
-  bool forward;  // runs lo -> hi in its triangle
-};
-
-// Every triangle's three edges, sorted so that the sides of one edge are adjacent.
-std::vector<HalfEdge> sorted_half_edges(const std::vector<Triangle>& tris) {
-  std::vector<HalfEdge> out;
-  out.reserve(3 * tris.size());
-  for (std::size_t t = 0; t < tris.size(); ++t) {
-    for (int k = 0; k < 3; ++k) {
-      const std::size_t a = tris[t][k], b = tris[t][(k + 1) % 3];
-      out.push_back({std::min(a, b), std::max(a, b), t, a < b});
-    }
-  }
-  std::sort(out.begin(), out.end(), [](const HalfEdge& p, const HalfEdge& q) {
-    return std::tie(p.lo, p.hi, p.tri) < std::tie(q.lo, q.hi, q.tri);
-  });
-  return out;
-}
+using detail::HalfEdge;
+using detail::sorted_half_edges;
 
 // Calls f(first, last) for each run of half-edges on one edge.
 template <class F>
