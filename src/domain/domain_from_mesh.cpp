@@ -6,7 +6,6 @@
 #include <cmath>
 #include <filesystem>
 #include <sstream>
-#include <tuple>
 
 #include "../io/polygon_soup.h"
 #include "disktune/errors.h"
