@@ -28,10 +28,12 @@ CommandDomain open_domain(const DomainArgs& args) {
   if (args.sizing.empty()) {
     d.radius = args.radius;
     d.box ? d.box->validate_radius(d.radius) : d.planar->validate_radius(d.radius);
+    d.unit = density_unit(d.empty_packing(), d.area());
   } else {
     d.sizing = std::make_shared<const Sizing>(parse_sizing(args.sizing, d.planar));
-    SizingStats stats;
-    sized_packing(d.box ? d.box->frame() : d.planar->frame(), d.planar, d.sizing, &stats);  // refuses L >= 1/2
+    SizingStats stats;  // sampling the sizing refuses L >= 1/2
+    d.unit = density_unit(sized_packing(d.box ? d.box->frame() : d.planar->frame(), d.planar, d.sizing, &stats),
+                          d.area());
     if (stats.lipschitz > 0.25) {
       std::fprintf(stderr,
                    "disktune: warning: the sizing's gradation L = %.3g is above 0.25: the smallest "
@@ -64,7 +66,7 @@ std::string CommandDomain::radius_text() const {
 }
 
 std::string CommandDomain::density_text(std::size_t count) const {
-  const double eta = static_cast<double>(count) / density_unit(empty_packing(), area());
+  const double eta = static_cast<double>(count) / unit;
   char text[64];
   std::snprintf(text, sizeof text, "eta = %.4f, rho = %.4f", eta,
                 std::sqrt(eta * 2 * std::sqrt(3.0) / 3.14159265358979323846));

@@ -24,6 +24,7 @@ struct CommandDomain {
   std::string file;                            // the file's name, for messages
   double radius = 0;                           // --radius (0 with a sizing)
   std::shared_ptr<const Sizing> sizing;        // --sizing
+  double unit = 0;                             // the count at area fraction 1 (density_unit)
 
   double area() const { return box ? box->area() : planar->area(); }
   /// "1 x 1 periodic box" or "planar domain FILE (...)".

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
+#include <vector>
 
 #include "disktune/boundary.h"
 #include "void_repair.h"
@@ -43,15 +45,20 @@ std::vector<double> spaced_sites(const Packing& packing, Vec2 a, Vec2 b, double 
 
 void tune_boundary(Packing& packing, const PlanarDomain& domain, double spacing_factor, Rng& rng) {
   const BoundaryLoops old = boundary_loops(packing, domain);
+  // The corners keep their disks; sorted, so each boundary disk is looked up in log time.
+  std::vector<std::pair<double, double>> corners;
+  for (const auto& l : domain.loops()) {
+    for (const Vec2 v : l) corners.push_back({v.x, v.y});
+  }
+  std::sort(corners.begin(), corners.end());
   // Where disks go, voids may open: only there does the interior need repair.
   std::vector<std::pair<Vec2, double>> lifted;
   for (const auto& loop : old) {
     for (const DiskId id : loop) {
       const Vec2 c = packing.center(id);
-      const bool corner = std::any_of(domain.loops().begin(), domain.loops().end(), [&](const auto& l) {
-        return std::find(l.begin(), l.end(), c) != l.end();
-      });
-      if (!corner) lifted.push_back({c, packing.radius(id)}), packing.remove(id);
+      if (std::binary_search(corners.begin(), corners.end(), std::make_pair(c.x, c.y))) continue;
+      lifted.push_back({c, packing.radius(id)});
+      packing.remove(id);
     }
   }
   for (const BoundarySegment& s : domain.segments()) {

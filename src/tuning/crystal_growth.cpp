@@ -223,9 +223,6 @@ class Crystal {
   Attractors attractors_;
 };
 
-}  // namespace
-
-namespace {
 // The lattice has one spacing: the paper has no crystal growth for varying radii.
 void require_one_radius(const Packing& packing) {
   if (packing.sizing()) {
@@ -234,6 +231,7 @@ void require_one_radius(const Packing& packing) {
                        "attractor ejection");
   }
 }
+
 }  // namespace
 
 std::size_t crystal_inject(Packing& packing, Rng& rng, std::size_t max_added,
