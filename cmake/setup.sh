@@ -16,7 +16,7 @@ case "$mode" in run | test | bench) ;; *)
 esac
 cd "$(dirname "$0")/.."
 
-packages=(g++ cmake make libcgal-dev libcli11-dev libgtest-dev nlohmann-json3-dev libpng-dev pkgconf libmuparser-dev libopenmesh-dev)
+packages=(g++ cmake make libcgal-dev libcli11-dev libgtest-dev nlohmann-json3-dev libpng-dev pkgconf libmuparser-dev libopenmesh-dev libeigen3-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

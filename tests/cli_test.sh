@@ -3,6 +3,7 @@
 # The `disktune` command end to end: outputs, exit codes, messages, no partial files.
 set -u
 bin="$1"
+data=$(cd "$(dirname "$0")/../data" && pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work"
@@ -190,6 +191,47 @@ expect sizing-steep 2 "gradation" -- "$bin" sample --domain hole.poly --sizing "
 absent sizing-steep-output z.csv
 expect sizing-warning 0 "warning: the sizing's gradation L = 0.4" -- "$bin" sample --domain hole.poly --sizing "0.01 + 0.4*x" --output z.csv
 expect sizing-crystal 2 "crystal growth needs one radius" -- "$bin" tune --domain hole.poly --sizing "0.03 + 0.03*x" --input v.csv --target-fraction 0.8 --method crystal
+
+# curved surfaces: samples x,y,z,r, the restricted Delaunay mesh, the report, refusals.
+# eight.off's bounding box diagonal is 1.13: r = 0.045 is 0.04 of it (a few hundred disks).
+eight="$data/surfaces/eight.off"
+expect surface-sample 0 "^sample: [0-9]+ disks, eta = 0\.[0-9]+.*surface .*eight\.off \(315 vertices, 634 triangles, genus 2, closed, area 1\.018" -- "$bin" sample --domain "$eight" --radius 0.045 --seed 3 --output e.csv
+head -n 1 e.csv | grep -qx "x,y,z,r" && pass=$((pass + 1)) || { echo "FAIL surface header"; fails=$((fails + 1)); }
+expect surface-tune 0 "^tune: [0-9]+ -> 420 disks \(target 420, reached\)" -- "$bin" tune --domain "$eight" --radius 0.045 --input e.csv --target-count 420 --output e4.csv
+[ "$(($(wc -l <e4.csv) - 1))" -eq 420 ] && pass=$((pass + 1)) || { echo "FAIL surface tune row count"; fails=$((fails + 1)); }
+expect surface-mesh 0 "^mesh: 420 disks, 420 vertices, [0-9]+ triangles \(restricted Delaunay\), manifold yes, genus 2 \(input genus 2\)" -- "$bin" mesh e4.csv --domain "$eight" --radius 0.045 --output e4.off
+sed -n 2p e4.off | grep -qE "^420 [0-9]+ 0$" && pass=$((pass + 1)) || { echo "FAIL surface mesh OFF header"; fails=$((fails + 1)); }
+expect surface-report 0 "^report: 420 disks, eta = 0\.6[0-9]+, rho = [0-9.]+, maximal, conflict-free; mesh: .*manifold yes, genus 2" -- "$bin" report e4.csv --domain "$eight" --radius 0.045 --json e4.json
+grep -q '"maximal": true' e4.json && grep -q '"hausdorff"' e4.json && grep -q '"local_beta"' e4.json && pass=$((pass + 1)) || { echo "FAIL surface report JSON"; fails=$((fails + 1)); }
+expect surface-mesh-ply 0 "-> e4.ply" -- "$bin" mesh e4.csv --domain "$eight" --radius 0.045 --output e4.ply
+expect surface-from-ply 0 "surface e4\.ply \(420 vertices, [0-9]+ triangles, genus 2, closed" -- "$bin" sample --domain e4.ply --radius 0.05
+expect surface-curvature 0 "^sample: [0-9]+ disks, .*sizing curvature .*genus 0, closed" -- "$bin" sample --domain "$data/surfaces/sphere.off" --sizing curvature --output sc.csv
+expect surface-curvature-report 0 "maximal, conflict-free" -- "$bin" report sc.csv --domain "$data/surfaces/sphere.off" --sizing curvature
+expect surface-boundary 0 "[0-9]+ disks \([0-9]+ on the boundary\), .*1 boundary loop" -- "$bin" sample --domain "$data/surfaces/mesh_with_border.off" --radius 4 --output mb.csv
+expect surface-boundary-read 0 "[0-9]+ disks \([1-9][0-9]* on the boundary\), .*maximal, conflict-free" -- "$bin" report mb.csv --domain "$data/surfaces/mesh_with_border.off" --radius 4
+expect flat-off-is-planar 0 "planar domain .*square_with_hole\.off" -- "$bin" sample --domain "$data/domains/square_with_hole.off" --radius 0.05
+printf 'OFF\n5 2 0\n0 0 0\n1 0 0\n1 1 0.5\n0 1 0\n2 2 1\n4 0 1 2 3\n3 1 4 2\n' >quad.off
+expect surface-quad 2 "face 0 of quad\.off has 4 corners.*triangulate" -- "$bin" sample --domain quad.off --radius 0.1 --output never.csv
+absent surface-quad-output never.csv
+printf 'OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0.3\n0 -1 0.2\n0 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n' >fin.off
+expect surface-non-manifold 2 "fin\.off: the edge between vertex 0 .* and vertex 1 .* lies in 3 triangles" -- "$bin" sample --domain fin.off --radius 0.1 --output never.csv
+absent surface-non-manifold-output never.csv
+expect surface-svg 2 "cannot show disks on a curved surface" -- "$bin" sample --domain "$eight" --radius 0.045 --output never.csv --svg never.svg
+absent surface-svg-output never.csv
+absent surface-svg-picture never.svg
+expect surface-report-svg 2 "draws the plane" -- "$bin" report e4.csv --domain "$eight" --radius 0.045 --json never.json --svg never.svg
+absent surface-report-svg-output never.json
+expect surface-report-png 2 "periodic box only" -- "$bin" report e4.csv --domain "$eight" --radius 0.045 --png-dir pics
+expect surface-angle 2 "angle injection triangulates" -- "$bin" tune --domain "$eight" --radius 0.045 --input e.csv --target-count 420 --method angle --output never.csv
+expect surface-crystal 0 "reached.*phase crystal ejection" -- "$bin" tune --domain "$eight" --radius 0.045 --input e.csv --target-fraction 0.5 --method crystal-eject
+absent surface-angle-output never.csv
+expect surface-mesh-vtk 2 "supported on a surface: \.off, \.obj, \.ply" -- "$bin" mesh e4.csv --domain "$eight" --radius 0.045 --output never.vtk
+absent surface-mesh-vtk-output never.vtk
+{ head -n 3 e.csv; echo "0.5,0.5,0.5,0.045"; tail -n +4 e.csv; } >offsurface.csv
+expect surface-point-off 2 "offsurface\.csv:4: point \(0\.5, 0\.5, 0\.5\) lies .* from the surface" -- "$bin" tune --domain "$eight" --radius 0.045 --input offsurface.csv --target-count 420 --output never.csv
+absent surface-point-off-output never.csv
+expect surface-wrong-radius 2 "e\.csv:2: radius 0\.045 differs" -- "$bin" report e.csv --domain "$eight" --radius 0.05 --json never.json
+absent surface-wrong-radius-output never.json
 
 # the sweep table (tiny)
 expect sweep 0 "\| CVT at the count of eta" -- "$bin" sweep --radius 0.05 --eta 0 0.6 --cvt-iterations 5 --output sweep.md

@@ -11,6 +11,7 @@
 
 #include "disktune/mesh.h"
 #include "disktune/packing.h"
+#include "disktune/surface_mesh.h"
 
 namespace disktune {
 
@@ -103,6 +104,22 @@ struct PlanarQualityReport {
 };
 /// Throws InvalidInput for an empty packing.
 PlanarQualityReport measure_planar_quality(const Packing& packing, const PlanarMesh& mesh, double area);
+
+/// The shape measures of a surface mesh (a restricted Delaunay mesh): 3D triangle
+/// angles, edges over the mean radius of their ends, and local beta (the largest
+/// circumradius of the triangles around a vertex over its shortest edge) of the vertices
+/// on no boundary edge.
+struct SurfaceMeshQuality {
+  std::size_t vertex_count = 0, triangle_count = 0, interior_vertex_count = 0;
+  QualityReport::Angles angles;
+  QualityReport::Edges edges;
+  QualityReport::LocalBeta local_beta;
+  double hausdorff = 0;  // to the input surface: filled by the caller (hausdorff_distance)
+};
+/// `vertex_radius` holds one radius per vertex. Throws InvalidInput for a mesh without
+/// triangles, a triangle naming a missing vertex, or a radius count that differs from
+/// the vertex count.
+SurfaceMeshQuality measure_surface_mesh(const SurfaceMesh& mesh, const std::vector<double>& vertex_radius);
 
 /// Measures `packing`, whose disks all have radius `r`, and its periodic Delaunay mesh
 /// (from periodic_delaunay(packing)); distances are relative to r. Throws InvalidInput

@@ -24,4 +24,9 @@ void write_quality_json(const std::string& path, const QualityReport& report,
 std::string quality_json(const PlanarQualityReport& report);
 void write_quality_json(const std::string& path, const PlanarQualityReport& report);
 
+/// A surface mesh's measures: {vertex_count, triangle_count, interior_vertex_count,
+/// hausdorff, angles, edges, local_beta} with the keys of the torus report.
+std::string quality_json(const SurfaceMeshQuality& quality);
+void write_quality_json(const std::string& path, const SurfaceMeshQuality& quality);
+
 }  // namespace disktune

@@ -15,6 +15,8 @@
 
 namespace disktune {
 
+class SurfacePacking;
+
 /// What the user asks for: an exact disk count, an area fraction eta, or a relative
 /// radius rho (see density.h). Fractions and radii are turned into the nearest count.
 struct Target {
@@ -35,6 +37,8 @@ std::size_t target_count(const Target& target, double r, double area);
 /// / 4) for one radius, the integral of 4 / (pi r(x)^2) with a sizing (then "area
 /// fraction" is this relative density: docs/sizing.md).
 double density_unit(const Packing& packing, double area);
+/// The count a target means where `unit` disks make area fraction 1 (density_unit).
+std::size_t target_count_for_unit(const Target& target, double unit);
 /// The count a target means for this packing (its radius or its sizing).
 std::size_t target_count(const Target& target, const Packing& packing, double area);
 
@@ -91,6 +95,8 @@ struct TuneOptions {
   std::function<void(const Progress&)> on_progress;
   /// Called after every single operation that changed the packing (for tests: slow).
   std::function<void(const Packing&)> after_operation;
+  /// The same for tuning on a surface (surface_tuning.h).
+  std::function<void(const SurfacePacking&)> after_surface_operation;
 };
 
 struct TuneResult {

@@ -1,19 +1,94 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "command_domain.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <sstream>
 
 #include "disktune/boundary.h"
 #include "disktune/errors.h"
 #include "disktune/io.h"
 #include "disktune/sampling.h"
+#include "disktune/surface_io.h"
+#include "disktune/surface_tuning.h"
+#include "disktune/surface_voids.h"
 #include "disktune/voids.h"
 
 namespace disktune::cli {
 
+namespace {
+
+std::string lower_extension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext;
+}
+
+CommandDomain open_surface(const DomainArgs& args) {
+  CommandDomain d;
+  d.file = args.kind;
+  d.surface = std::make_shared<const SurfaceDomain>(disktune::read_surface(args.kind));
+  if (args.has_radius == !args.sizing.empty()) {
+    throw InvalidInput("give the disk radius with --radius R, or radii that vary over the surface with "
+                       "--sizing curvature[:RMIN,RMAX], an expression in x, y, z or a number (one of "
+                       "the two)");
+  }
+  if (args.sizing.empty()) {
+    if (!(args.radius > 0) || !std::isfinite(args.radius)) {
+      throw InvalidInput("--radius: the radius must be a finite positive number");
+    }
+    d.radius = args.radius;
+    d.surface_sizing = std::make_shared<const SurfaceSizing>(SurfaceSizing::constant(args.radius));
+  } else {
+    d.surface_sizing = std::make_shared<const SurfaceSizing>(parse_surface_sizing(args.sizing, *d.surface));
+  }
+  // A maximal sample holds about 0.55 A / (pi r^2 / 4) disks: refuse, before any grid is
+  // built, radii so small that it could not fit in memory.
+  const double kMaxDisks = 2e8, pi = 3.14159265358979323846;
+  const double r_min = d.surface_sizing->min_radius();
+  const double most = 0.55 * d.surface->area() / (pi * r_min * r_min / 4);
+  if (!(most <= kMaxDisks)) {
+    std::ostringstream msg;
+    msg.precision(4);
+    if (d.surface_sizing->is_constant()) {
+      msg << "radius " << r_min;
+    } else {
+      msg << "the smallest radius " << r_min << " of the " << d.radius_text();
+    }
+    msg << " is too small for the surface "
+        << args.kind << " of area " << d.surface->area() << ": a maximal sample would hold up to "
+        << most << " disks, more than the " << kMaxDisks << " this machine can hold; use r >= "
+        << std::sqrt(0.55 * d.surface->area() / (pi / 4 * kMaxDisks)) * 1.0001;
+    throw InvalidInput(msg.str());
+  }
+  d.unit = density_unit(d.empty_surface_packing());
+  return d;
+}
+
+}  // namespace
+
+bool names_surface(const DomainArgs& args) {
+  if (args.kind == "periodic") return false;
+  const std::string ext = lower_extension(args.kind);
+  if (ext == ".ply" || ext == ".stl") return true;
+  if (ext == ".off" || ext == ".obj") return !is_flat_mesh_file(args.kind);
+  return false;
+}
+
 CommandDomain open_domain(const DomainArgs& args) {
+  const std::string ext = lower_extension(args.kind);
+  if (args.kind != "periodic" && ext != ".poly" && ext != ".off" && ext != ".obj" && ext != ".ply" &&
+      ext != ".stl") {
+    throw InvalidInput("--domain " + args.kind + ": unknown kind of domain" +
+                       (ext.empty() ? std::string() : " (extension '" + ext + "')") +
+                       "; give 'periodic', a planar domain file (.poly, or a flat .off or .obj "
+                       "mesh) or a surface file (.off, .obj, .ply, .stl)");
+  }
+  if (names_surface(args)) return open_surface(args);
   CommandDomain d;
   if (args.kind == "periodic") {
     d.box.emplace(args.width, args.height);
@@ -48,6 +123,16 @@ std::string CommandDomain::describe() const {
   std::ostringstream s;
   if (box) {
     s << box->width() << " x " << box->height() << " periodic box";
+  } else if (surface) {
+    s << "surface " << file << " (" << surface->vertices().size() << " vertices, "
+      << surface->triangles().size() << " triangles, genus " << surface->genus() << ", ";
+    if (surface->is_closed()) {
+      s << "closed";
+    } else {
+      s << surface->boundary_loops().size() << " boundary loop"
+        << (surface->boundary_loops().size() == 1 ? "" : "s");
+    }
+    s << ", area " << surface->area() << ")";
   } else {
     s << "planar domain " << file << " (" << planar->loops().size() << " boundary loops, area "
       << planar->area() << ")";
@@ -57,7 +142,11 @@ std::string CommandDomain::describe() const {
 
 std::string CommandDomain::radius_text() const {
   std::ostringstream s;
-  if (sizing) {
+  if (surface_sizing && !surface_sizing->is_constant()) {
+    s << "sizing " << surface_sizing->description();
+  } else if (surface_sizing) {
+    s << "r = " << surface_sizing->max_radius();
+  } else if (sizing) {
     s << "sizing " << sizing->description();
   } else {
     s << "r = " << radius;
@@ -98,6 +187,21 @@ TuneResult CommandDomain::tune(Packing& packing, const Target& target, Rng& rng,
                                const TuneOptions& options) const {
   return box ? disktune::tune(packing, *box, target, rng, options)
              : disktune::tune(packing, *planar, target, rng, options);
+}
+
+SurfacePacking CommandDomain::empty_surface_packing() const {
+  return SurfacePacking(surface, *surface_sizing);
+}
+
+SurfacePacking CommandDomain::sample_surface(Rng& rng) const {
+  return sample_surface_mps(surface, *surface_sizing, rng);
+}
+
+SurfacePacking CommandDomain::read_surface(const std::string& csv, bool check) const {
+  SurfacePacking packing = empty_surface_packing();
+  read_surface_csv(csv, packing);
+  if (check) validate_surface_packing(packing, csv);
+  return packing;
 }
 
 }  // namespace disktune::cli

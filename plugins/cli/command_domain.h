@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The domain a command works on, from --domain, --width, --height, --radius and
-// --sizing: the periodic box or a planar domain read from a .poly, .off or .obj file,
-// with one radius or a sizing function. One place decides how each is sampled, read
+// --sizing: the periodic box, a planar domain read from a .poly, .off or .obj file, or a
+// curved surface read from a .off, .obj, .ply or .stl file, with one radius or a sizing
+// function. One place decides how each is sampled, read
 // back, checked and tuned, so every command treats them alike.
 #pragma once
 
@@ -14,25 +15,29 @@
 #include "disktune/periodic_box.h"
 #include "disktune/planar_domain.h"
 #include "disktune/sizing.h"
+#include "disktune/surface_packing.h"
 #include "disktune/tuning.h"
 
 namespace disktune::cli {
 
 struct CommandDomain {
   std::optional<PeriodicBox> box;              // --domain periodic
-  std::shared_ptr<const PlanarDomain> planar;  // --domain FILE
+  std::shared_ptr<const PlanarDomain> planar;  // --domain FILE (flat)
+  std::shared_ptr<const SurfaceDomain> surface;          // --domain FILE (curved)
+  std::shared_ptr<const SurfaceSizing> surface_sizing;  // its --radius or --sizing
   std::string file;                            // the file's name, for messages
   double radius = 0;                           // --radius (0 with a sizing)
   std::shared_ptr<const Sizing> sizing;        // --sizing
   double unit = 0;                             // the count at area fraction 1 (density_unit)
 
-  double area() const { return box ? box->area() : planar->area(); }
-  /// "1 x 1 periodic box" or "planar domain FILE (...)".
+  double area() const { return box ? box->area() : planar ? planar->area() : surface->area(); }
+  /// "1 x 1 periodic box", "planar domain FILE (...)" or "surface FILE (...)".
   std::string describe() const;
   /// "r = 0.01" or "sizing 0.005 + 0.01*x".
   std::string radius_text() const;
   /// "eta = 0.5474, rho = 0.7769" for a count (eta relative to the sizing: docs/sizing.md).
   std::string density_text(std::size_t count) const;
+  // The box and planar domains (not a surface: see the surface_ members below).
   /// An empty packing for this domain and radius (a sizing is sampled and checked).
   Packing empty_packing() const;
   Packing sample(Rng& rng) const;
@@ -41,7 +46,19 @@ struct CommandDomain {
   /// maximal (what tuning starts from; a report measures whatever it gets).
   Packing read(const std::string& csv, bool check) const;
   TuneResult tune(Packing& packing, const Target& target, Rng& rng, const TuneOptions& options) const;
+
+  // A surface.
+  SurfacePacking empty_surface_packing() const;
+  SurfacePacking sample_surface(Rng& rng) const;
+  /// Reads samples (x,y,z[,r]) of this surface; disks on its open boundary become fixed.
+  /// With `check`, throws InvalidInput unless they are conflict-free and maximal.
+  SurfacePacking read_surface(const std::string& csv, bool check) const;
 };
+
+/// Whether --domain names a curved surface: a .ply or .stl file always, a .off or .obj
+/// file unless all its vertices have the same z (then it is a planar domain). The one
+/// place that decides; reads the file for .off and .obj.
+bool names_surface(const DomainArgs& args);
 
 /// Opens the domain named by the options (reads and validates a domain file, parses
 /// and checks the sizing). Throws InvalidInput unless exactly one of --radius and

@@ -52,6 +52,19 @@ struct TuneJob {
 };
 int run_tune(const TuneJob& job);
 
+/// The commands on a curved surface (surface_commands.cpp): each command runs these
+/// instead when its --domain names a surface (names_surface in command_domain.h).
+int run_surface_sample(const SampleJob& job);
+int run_surface_tune(const TuneJob& job);
+int run_surface_mesh(const std::string& input, const DomainArgs& domain, const std::string& output);
+struct SurfaceReportJob {
+  std::string input;
+  DomainArgs domain;
+  std::string json, svg, png_dir;
+  int spectrum_window = 0;
+};
+int run_surface_report(const SurfaceReportJob& job);
+
 /// The built-in default job, run by `disktune` with no arguments.
 int run_demo();
 

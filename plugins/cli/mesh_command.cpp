@@ -23,6 +23,7 @@ struct MeshArgs {
 };
 
 int run_mesh(const MeshArgs& args) {
+  if (names_surface(args.domain)) return run_surface_mesh(args.input, args.domain, args.output);
   mesh_format_for_path(args.output);  // a bad extension fails before any work
   check_output_folder(args.output);
   const CommandDomain domain = open_domain(args.domain);
@@ -57,11 +58,14 @@ void add_mesh_command(CLI::App& app, Action& action) {
       "Write the Delaunay mesh of a packing (CSV x,y,r) as OFF, OBJ or VTK. In the periodic "
       "box: each torus triangle once, laid out with its centroid in the box; vertices past "
       "the first N are periodic copies of disks, across the seam. In a planar domain: the "
-      "constrained Delaunay triangulation, boundary segments as edges, holes removed.");
-  cmd->add_option("points", args->input, "CSV file of the packing (header x,y,r)")->required();
+      "constrained Delaunay triangulation, boundary segments as edges, holes removed. On a "
+      "surface: the restricted Delaunay triangulation, checked for manifoldness and genus.");
+  cmd->add_option("points", args->input, "CSV file of the packing (header x,y,r; x,y,z,r on a surface)")
+      ->required();
   add_domain_options(cmd, args->domain);
   cmd->add_option("--output,-o", args->output,
-                  "Mesh file to write: .off, .obj or .vtk (legacy ASCII, opens in ParaView)")
+                  "Mesh file to write: .off, .obj or .vtk (legacy ASCII, opens in ParaView); on a "
+                  "surface .off, .obj or .ply")
       ->required();
   cmd->callback([args, &action] { action = [args] { return run_mesh(*args); }; });
 }

@@ -56,6 +56,7 @@ int run_planar_report(const ReportArgs& args, const CommandDomain& domain) {
 }
 
 int run_report(const ReportArgs& args) {
+  if (names_surface(args.domain)) return run_surface_report({args.input, args.domain, args.json, args.svg, args.png_dir, args.spectrum_window});
   check_output_folder(args.json);
   check_output_folder(args.svg);
   if (!args.png_dir.empty()) check_picture_folder(args.png_dir);
@@ -103,8 +104,10 @@ void add_report_command(CLI::App& app, Action& action) {
       "report",
       "Measure a packing (CSV x,y,r) and its periodic Delaunay mesh: density, spacing, "
       "coverage, maximality, angles, edge lengths, local beta, Voronoi cells, spectrum "
-      "(docs/quality.md).");
-  cmd->add_option("points", args->input, "CSV file of the packing (header x,y,r)")->required();
+      "(docs/quality.md). On a surface: density, maximality, conflicts, and the restricted "
+      "Delaunay mesh's topology, angles, edges, local beta and Hausdorff distance (--json only).");
+  cmd->add_option("points", args->input, "CSV file of the packing (header x,y,r; x,y,z,r on a surface)")
+      ->required();
   add_domain_options(cmd, args->domain);
   cmd->add_option("--json", args->json, "Write the full report (with histograms) as JSON");
   cmd->add_option("--svg", args->svg, "Draw the mesh over the disks (at r/2) as an SVG picture");

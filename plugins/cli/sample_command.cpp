@@ -14,6 +14,7 @@
 namespace disktune::cli {
 
 int run_sample(const SampleJob& job) {
+  if (names_surface(job.domain)) return run_surface_sample(job);
   check_output_folder(job.output);
   check_output_folder(job.svg);
   const CommandDomain domain = open_domain(job.domain);
@@ -39,9 +40,12 @@ void check_output_folder(const std::string& path) {
 
 void add_domain_options(CLI::App* cmd, DomainArgs& domain) {
   cmd->add_option("--domain", domain.kind,
-                  "'periodic' (a W x H periodic box), or a planar domain file: .poly (Triangle's "
-                  "format: outer boundary and holes), .off or .obj (a planar triangle mesh, whose "
-                  "boundary loops bound the domain); every polygon vertex gets a fixed disk")
+                  "'periodic' (a W x H periodic box); a planar domain file: .poly (Triangle's "
+                  "format: outer boundary and holes), .off or .obj (a flat triangle mesh, all z "
+                  "equal, whose boundary loops bound the domain), every polygon vertex getting a "
+                  "fixed disk; or a curved surface: a .off, .obj (not flat), .ply or .stl triangle "
+                  "mesh (a 2-manifold, possibly with boundary curves, which get fixed disks); "
+                  "surface samples are CSV x,y,z,r")
       ->capture_default_str();
   cmd->add_option("--width", domain.width, "Width W of the periodic box")->capture_default_str();
   cmd->add_option("--height", domain.height, "Height H of the periodic box")->capture_default_str();
@@ -52,7 +56,9 @@ void add_domain_options(CLI::App* cmd, DomainArgs& domain) {
   cmd->add_option("--sizing", domain.sizing,
                   "Radii that vary over the domain, instead of --radius: a number, an expression "
                   "in x and y (e.g. '0.005 + 0.01*x'), a grid file, or boundary:RMIN,RMAX,G "
-                  "(r grows with the distance to a planar domain's boundary); docs/sizing.md");
+                  "(r grows with the distance to a planar domain's boundary); docs/sizing.md. On "
+                  "a surface: a number, an expression in x, y and z, or curvature[:RMIN,RMAX] "
+                  "(smaller where the surface bends more)");
 }
 
 void add_sample_command(CLI::App& app, Action& action) {
@@ -62,8 +68,8 @@ void add_sample_command(CLI::App& app, Action& action) {
   add_domain_options(cmd, job->domain);
   cmd->add_option("--seed", job->seed, "Random seed; the same seed gives the same output")
       ->capture_default_str();
-  cmd->add_option("--output,-o", job->output, "CSV file to write (header x,y,r)");
-  cmd->add_option("--svg", job->svg, "Also draw the packing as an SVG picture");
+  cmd->add_option("--output,-o", job->output, "CSV file to write (header x,y,r; x,y,z,r on a surface)");
+  cmd->add_option("--svg", job->svg, "Also draw the packing as an SVG picture (not on a surface)");
   cmd->callback([job, &action] { action = [job] { return run_sample(*job); }; });
 }
 

@@ -41,6 +41,7 @@ Method method_named(const std::string& name) {
 }  // namespace
 
 int run_tune(const TuneJob& job) {
+  if (names_surface(job.domain)) return run_surface_tune(job);
   check_output_folder(job.output);
   check_output_folder(job.svg);
   const CommandDomain domain = open_domain(job.domain);
@@ -103,10 +104,11 @@ void add_tune_command(CLI::App& app, Action& action) {
           {"auto", "void", "repeller", "crystal", "angle", "sift", "attractor", "crystal-eject"}))
       ->capture_default_str();
   cmd->add_option("--input,-i", args->input,
-                  "Start from this CSV (x,y,r; a conflict-free maximal packing) instead of a new MPS");
+                  "Start from this CSV (x,y,r, or x,y,z,r on a surface; a conflict-free maximal "
+                  "packing) instead of a new MPS");
   cmd->add_option("--seed", args->seed, "Random seed; the same seed gives the same output")
       ->capture_default_str();
-  cmd->add_option("--output,-o", args->output, "CSV file to write (header x,y,r)");
+  cmd->add_option("--output,-o", args->output, "CSV file to write (header x,y,r; x,y,z,r on a surface)");
   cmd->add_option("--svg", args->svg, "Also draw the packing (frozen crystal disks in blue)");
   cmd->callback([args, cmd, &action] {
     if (cmd->count("--target-count") + cmd->count("--target-fraction") + cmd->count("--target-rho") != 1) {

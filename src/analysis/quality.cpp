@@ -12,11 +12,11 @@
 #include "disktune/tolerance.h"
 #include "disktune/tuning.h"
 #include "disktune/voids.h"
+#include "mesh_shape.h"
 
 namespace disktune {
 namespace {
 
-constexpr double kRadToDeg = 57.295779513082320876798;
 // Angles this close to a threshold (degrees) count as on it: a square lattice's right
 // angles are not obtuse, an angle of 70 - 1e-14 is within [50, 70].
 constexpr double kAngleTolDeg = 1e-9;
@@ -40,11 +40,10 @@ void add(Histogram& h, double v) {
   }
 }
 
-/// The angle at corner a of triangle (a, b, c), in degrees; atan2 stays accurate for
-/// angles near 0 and 180, where acos of a rounded cosine does not.
+/// The angle at corner a of triangle (a, b, c), in degrees.
 double angle_at(Vec2 a, Vec2 b, Vec2 c) {
   const Vec2 u = b - a, v = c - a;
-  return std::atan2(std::abs(cross(u, v)), dot(u, v)) * kRadToDeg;
+  return detail::corner_angle_deg(std::abs(cross(u, v)), dot(u, v));
 }
 
 Statistics statistics(const std::vector<double>& values) {
@@ -82,6 +81,21 @@ QualityReport::LocalBeta beta_statistics(const std::vector<double>& betas) {
   B.mean = st.mean;
   B.max = st.max;
   return B;
+}
+
+/// Each triangle's angles (atan2 form) and circumradius, in the plane.
+std::vector<detail::TriangleShape> planar_shapes(
+    const std::vector<Vec2>& vertices, const std::vector<std::array<std::uint32_t, 3>>& triangles) {
+  std::vector<detail::TriangleShape> out;
+  out.reserve(triangles.size());
+  for (const auto& t : triangles) {
+    const Vec2 p[3] = {vertices[t[0]], vertices[t[1]], vertices[t[2]]};
+    detail::TriangleShape s;
+    for (int k = 0; k < 3; ++k) s.angles_deg[k] = angle_at(p[k], p[(k + 1) % 3], p[(k + 2) % 3]);
+    s.circumradius = distance(circumcenter(p[0], p[1], p[2]), p[0]);
+    out.push_back(s);
+  }
+  return out;
 }
 
 void check_mesh_of(const Packing& packing, const TriangleMesh& mesh) {
@@ -127,19 +141,18 @@ bool is_conflict_free(const Packing& packing) {
 
 }  // namespace
 
-QualityReport::Angles measure_angles(const std::vector<Vec2>& vertices,
-                                     const std::vector<std::array<std::uint32_t, 3>>& triangles) {
-  if (triangles.empty()) throw InvalidInput("measure_angles: the mesh has no triangles");
+namespace detail {
+
+QualityReport::Angles angle_statistics(const std::vector<TriangleShape>& shapes) {
+  if (shapes.empty()) throw InvalidInput("cannot measure the angles of a mesh without triangles");
   QualityReport::Angles A;
   A.histogram = make_histogram(0, 1, 180);
   A.min = kInf;
   std::size_t in_50_70 = 0, obtuse = 0;
   double abs_dev_sum = 0;
-  for (const auto& t : triangles) {
-    const Vec2 p[3] = {vertices[t[0]], vertices[t[1]], vertices[t[2]]};
+  for (const TriangleShape& t : shapes) {
     double largest = 0;
-    for (int k = 0; k < 3; ++k) {
-      const double deg = angle_at(p[k], p[(k + 1) % 3], p[(k + 2) % 3]);
+    for (const double deg : t.angles_deg) {
       add(A.histogram, deg);
       A.min = std::min(A.min, deg);
       A.max = std::max(A.max, deg);
@@ -149,11 +162,55 @@ QualityReport::Angles measure_angles(const std::vector<Vec2>& vertices,
     }
     if (largest > 90 + kAngleTolDeg) ++obtuse;
   }
-  const double angle_count = 3.0 * static_cast<double>(triangles.size());
+  const double angle_count = 3.0 * static_cast<double>(shapes.size());
   A.mean_abs_dev_60 = abs_dev_sum / angle_count;
   A.fraction_50_70 = static_cast<double>(in_50_70) / angle_count;
-  A.fraction_obtuse_triangles = static_cast<double>(obtuse) / static_cast<double>(triangles.size());
+  A.fraction_obtuse_triangles = static_cast<double>(obtuse) / static_cast<double>(shapes.size());
   return A;
+}
+
+MeshShape measure_mesh_shape(std::size_t vertex_count,
+                             const std::vector<std::array<std::uint32_t, 3>>& triangles,
+                             const std::vector<TriangleShape>& shapes,
+                             const std::function<double(std::uint32_t, std::uint32_t)>& edge_length,
+                             const std::vector<double>& vertex_radius) {
+  MeshShape m;
+  m.angles = angle_statistics(shapes);
+  // Each edge with the number of triangles on it: one triangle means a boundary edge.
+  std::map<std::pair<std::uint32_t, std::uint32_t>, int> edge_uses;
+  std::vector<double> outradius(vertex_count, 0), nearest(vertex_count, kInf);
+  for (std::size_t i = 0; i < triangles.size(); ++i) {
+    const auto& t = triangles[i];
+    for (int k = 0; k < 3; ++k) {
+      outradius[t[k]] = std::max(outradius[t[k]], shapes[i].circumradius);
+      ++edge_uses[std::minmax(t[k], t[(k + 1) % 3])];
+    }
+  }
+  std::vector<bool> on_boundary(vertex_count, false);
+  std::vector<double> lengths_over_r;
+  for (const auto& [e, uses] : edge_uses) {
+    const double len = edge_length(e.first, e.second);
+    lengths_over_r.push_back(2 * len / (vertex_radius[e.first] + vertex_radius[e.second]));
+    for (const std::uint32_t v : {e.first, e.second}) {
+      nearest[v] = std::min(nearest[v], len);
+      if (uses == 1) on_boundary[v] = true;
+    }
+  }
+  m.edges = edge_statistics(lengths_over_r);
+  std::vector<double> betas;
+  for (std::size_t v = 0; v < vertex_count; ++v) {
+    if (!on_boundary[v] && outradius[v] > 0) betas.push_back(outradius[v] / nearest[v]);
+  }
+  m.interior_vertex_count = betas.size();
+  m.local_beta = beta_statistics(betas);
+  return m;
+}
+
+}  // namespace detail
+
+QualityReport::Angles measure_angles(const std::vector<Vec2>& vertices,
+                                     const std::vector<std::array<std::uint32_t, 3>>& triangles) {
+  return detail::angle_statistics(planar_shapes(vertices, triangles));
 }
 
 PlanarMeshQuality measure_planar_mesh(const PlanarMesh& mesh, double r) {
@@ -161,38 +218,19 @@ PlanarMeshQuality measure_planar_mesh(const PlanarMesh& mesh, double r) {
 }
 
 PlanarMeshQuality measure_planar_mesh(const PlanarMesh& mesh, const std::vector<double>& vertex_radius) {
+  const auto length = [&](std::uint32_t a, std::uint32_t b) {
+    return distance(mesh.vertices[a], mesh.vertices[b]);
+  };
+  const detail::MeshShape m =
+      detail::measure_mesh_shape(mesh.vertices.size(), mesh.triangles,
+                                 planar_shapes(mesh.vertices, mesh.triangles), length, vertex_radius);
   PlanarMeshQuality q;
   q.vertex_count = mesh.vertices.size();
   q.triangle_count = mesh.triangles.size();
-  q.angles = measure_angles(mesh.vertices, mesh.triangles);
-  // Each edge with the number of triangles on it: one triangle means a boundary edge.
-  std::map<std::pair<std::uint32_t, std::uint32_t>, int> edge_uses;
-  std::vector<double> outradius(mesh.vertices.size(), 0), nearest(mesh.vertices.size(), kInf);
-  for (const auto& t : mesh.triangles) {
-    const Vec2 p[3] = {mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]};
-    const double rho = distance(circumcenter(p[0], p[1], p[2]), p[0]);
-    for (int k = 0; k < 3; ++k) {
-      outradius[t[k]] = std::max(outradius[t[k]], rho);
-      ++edge_uses[std::minmax(t[k], t[(k + 1) % 3])];
-    }
-  }
-  std::vector<bool> on_boundary(mesh.vertices.size(), false);
-  std::vector<double> lengths_over_r;
-  for (const auto& [e, uses] : edge_uses) {
-    const double len = distance(mesh.vertices[e.first], mesh.vertices[e.second]);
-    lengths_over_r.push_back(2 * len / (vertex_radius[e.first] + vertex_radius[e.second]));
-    for (const std::uint32_t v : {e.first, e.second}) {
-      nearest[v] = std::min(nearest[v], len);
-      if (uses == 1) on_boundary[v] = true;
-    }
-  }
-  q.edges = edge_statistics(lengths_over_r);
-  std::vector<double> betas;
-  for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
-    if (!on_boundary[v] && outradius[v] > 0) betas.push_back(outradius[v] / nearest[v]);
-  }
-  q.interior_vertex_count = betas.size();
-  q.local_beta = beta_statistics(betas);
+  q.interior_vertex_count = m.interior_vertex_count;
+  q.angles = m.angles;
+  q.edges = m.edges;
+  q.local_beta = m.local_beta;
   return q;
 }
 

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <fstream>
@@ -6,16 +7,13 @@
 
 #include "disktune/errors.h"
 #include "disktune/io.h"
+#include "csv_numbers.h"
+#include "number_text.h"
 
 namespace disktune {
 namespace {
 
-// Shortest decimal form that reads back to the same double (std::to_chars).
-void put_number(std::ostream& out, double v) {
-  char buf[32];
-  const auto res = std::to_chars(buf, buf + sizeof buf, v);
-  out.write(buf, res.ptr - buf);
-}
+using detail::put_number;
 
 std::string trim(const std::string& s) {
   const auto b = s.find_first_not_of(" \t\r");
@@ -24,7 +22,64 @@ std::string trim(const std::string& s) {
   return s.substr(b, e - b + 1);
 }
 
+const char* count_word(std::size_t n) {
+  static const char* const words[] = {"no", "one", "two", "three", "four", "five"};
+  return n < 6 ? words[n] : "that many";
+}
+
 }  // namespace
+
+namespace detail {
+
+CsvNumbers read_csv_numbers(const std::string& path, const std::vector<std::string>& headers) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw IoError("cannot read '" + path + "': no such file or not readable");
+  CsvNumbers out;
+  std::string line;
+  std::size_t lineno = 0;
+  auto fail = [&](const std::string& what) {
+    std::ostringstream msg;
+    msg << path << ":" << lineno << ": " << what;
+    throw InvalidInput(msg.str());
+  };
+  std::string wanted;
+  for (std::size_t k = 0; k < headers.size(); ++k) {
+    wanted += (k == 0 ? "'" : k + 1 == headers.size() ? " or '" : ", '") + headers[k] + "'";
+  }
+  ++lineno;
+  if (!std::getline(in, line)) fail("empty file; expected the header " + wanted);
+  for (const std::string& h : headers) {
+    if (trim(line) == h) out.header = h;
+  }
+  if (out.header.empty()) fail("expected the header " + wanted + ", found '" + trim(line) + "'");
+  out.columns = static_cast<std::size_t>(std::count(out.header.begin(), out.header.end(), ',')) + 1;
+  const std::string count = count_word(out.columns);
+  while (std::getline(in, line)) {
+    ++lineno;
+    const std::string t = trim(line);
+    if (t.empty()) continue;
+    const char* p = t.data();
+    const char* end = t.data() + t.size();
+    for (std::size_t k = 0; k < out.columns; ++k) {
+      double v = 0;
+      const auto res = std::from_chars(p, end, v);
+      if (res.ec != std::errc() || !std::isfinite(v)) {
+        fail("expected " + count + " finite numbers '" + out.header + "', found '" + t + "'");
+      }
+      out.values.push_back(v);
+      p = res.ptr;
+      if (k + 1 < out.columns) {
+        if (p == end || *p != ',') fail("expected " + count + " comma-separated numbers, found '" + t + "'");
+        ++p;
+      }
+    }
+    if (p != end) fail("unexpected text after the last number in '" + t + "'");
+    out.lines.push_back(lineno);
+  }
+  return out;
+}
+
+}  // namespace detail
 
 void write_points_csv(const std::string& path, const Packing& packing) {
   write_file_atomically(path, [&](std::ostream& out) {
@@ -43,40 +98,17 @@ void write_points_csv(const std::string& path, const Packing& packing) {
 }
 
 std::vector<PointRecord> read_points_csv(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw IoError("cannot read '" + path + "': no such file or not readable");
+  const detail::CsvNumbers rows = detail::read_csv_numbers(path, {"x,y,r"});
   std::vector<PointRecord> out;
-  std::string line;
-  std::size_t lineno = 0;
-  auto fail = [&](const std::string& what) {
-    std::ostringstream msg;
-    msg << path << ":" << lineno << ": " << what;
-    throw InvalidInput(msg.str());
-  };
-  ++lineno;
-  if (!std::getline(in, line)) fail("empty file; expected the header 'x,y,r'");
-  if (trim(line) != "x,y,r") fail("expected the header 'x,y,r', found '" + trim(line) + "'");
-  while (std::getline(in, line)) {
-    ++lineno;
-    const std::string t = trim(line);
-    if (t.empty()) continue;
-    double v[3];
-    const char* p = t.data();
-    const char* end = t.data() + t.size();
-    for (int k = 0; k < 3; ++k) {
-      const auto res = std::from_chars(p, end, v[k]);
-      if (res.ec != std::errc() || !std::isfinite(v[k])) {
-        fail("expected three finite numbers 'x,y,r', found '" + t + "'");
-      }
-      p = res.ptr;
-      if (k < 2) {
-        if (p == end || *p != ',') fail("expected three comma-separated numbers, found '" + t + "'");
-        ++p;
-      }
+  out.reserve(rows.rows());
+  for (std::size_t k = 0; k < rows.rows(); ++k) {
+    const PointRecord p{rows.at(k, 0), rows.at(k, 1), rows.at(k, 2)};
+    if (!(p.r > 0)) {
+      std::ostringstream msg;
+      msg << path << ":" << rows.lines[k] << ": radius must be positive, found " << p.r;
+      throw InvalidInput(msg.str());
     }
-    if (p != end) fail("unexpected text after the third number in '" + t + "'");
-    if (!(v[2] > 0)) fail("radius must be positive, found '" + t + "'");
-    out.push_back({v[0], v[1], v[2]});
+    out.push_back(p);
   }
   return out;
 }

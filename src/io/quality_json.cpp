@@ -108,4 +108,20 @@ void write_quality_json(const std::string& path, const PlanarQualityReport& repo
   write_text(path, quality_json(report));
 }
 
+std::string quality_json(const SurfaceMeshQuality& q) {
+  json j;
+  j["vertex_count"] = q.vertex_count;
+  j["triangle_count"] = q.triangle_count;
+  j["interior_vertex_count"] = q.interior_vertex_count;
+  j["hausdorff"] = q.hausdorff;
+  j["angles"] = to_json(q.angles);
+  j["edges"] = to_json(q.edges);
+  j["local_beta"] = to_json(q.local_beta);
+  return j.dump(2) + "\n";
+}
+
+void write_quality_json(const std::string& path, const SurfaceMeshQuality& quality) {
+  write_text(path, quality_json(quality));
+}
+
 }  // namespace disktune

@@ -15,6 +15,7 @@
 
 #include "disktune/errors.h"
 #include "disktune/tuning.h"
+#include "crystal_grow.h"
 #include "void_repair.h"
 
 namespace disktune {
@@ -156,61 +157,23 @@ class Crystal {
     return false;
   }
 
-  // Grows the crystal; returns the change in the count (its absolute value).
-  std::size_t grow(std::size_t max_change, const std::function<void()>& after_step) {
-    const std::size_t start = p_.size();
-    auto within = [&](std::size_t n) {  // never past the target
-      return inject_ ? n <= start + max_change : n + max_change >= start;
-    };
-    detail::UndoLog batch(p_);
-    if (max_change == 0 || !seed(batch, max_change) || !within(p_.size())) {
-      batch.revert();
-      return 0;
+  // What grow_crystal needs besides seed, taken and settle.
+  Packing& packing() { return p_; }
+  bool has_sites() const { return !attractors_.empty(); }
+  Vec2 take_site() { return attractors_.take_random(rng_); }
+
+  // After a site settled in ejection: the mobile disks around it go through attractor
+  // ejection (3.2: disks that cover no attractor move as in attractor ejection), which
+  // removes those the lattice made redundant and pays for the voids the step refilled.
+  template <class Within>
+  void tidy(detail::UndoLog& log, Vec2 a, const Within& within) {
+    std::vector<DiskId> around;
+    p_.for_each_near(a, 2 * s_, [&](const Neighbor& n) {
+      if (mobile(p_, n.id)) around.push_back(n.id);
+    });
+    for (const DiskId id : around) {
+      if (p_.alive(id) && mobile(p_, id) && within(p_.size() - 1)) detail::attractor_eject(log, p_, id, rng_, 1);
     }
-    // A step can move the count the wrong way (deleting disks near a dense site may
-    // leave less room than they took; refilling voids near a sparse site adds disks).
-    // Steps are kept in a batch that is committed whenever the count is back at or past
-    // where the last commit left it, so committed states never go the wrong way; a
-    // batch still behind at the end is taken back.
-    std::size_t committed = start;
-    auto ahead = [&] { return inject_ ? p_.size() >= committed : p_.size() <= committed; };
-    if (ahead()) batch.commit(), committed = p_.size();
-    while (!attractors_.empty() && p_.size() != (inject_ ? start + max_change : start - max_change)) {
-      const Vec2 a = attractors_.take_random(rng_);
-      if (taken(a)) continue;
-      const std::size_t step = batch.mark();
-      const std::size_t room = inject_ ? start + max_change - std::min(p_.size(), start + max_change)
-                                       : max_change;
-      if (!settle(batch, a, room)) {
-        batch.revert_to(step);
-        continue;
-      }
-      if (!inject_) {
-        // The mobile disks around the new site: attractor ejection (3.2: disks that cover
-        // no attractor move as in attractor ejection) removes those the lattice made
-        // redundant, which pays for the voids the step refilled.
-        std::vector<DiskId> around;
-        p_.for_each_near(a, 2 * s_, [&](const Neighbor& n) {
-          if (mobile(p_, n.id)) around.push_back(n.id);
-        });
-        for (const DiskId id : around) {
-          if (p_.alive(id) && mobile(p_, id) && within(p_.size() - 1)) {
-            detail::attractor_eject(batch, p_, id, rng_, 1);
-          }
-        }
-      }
-      if (!within(p_.size())) {
-        batch.revert_to(step);
-        continue;
-      }
-      if (ahead()) {
-        batch.commit();
-        committed = p_.size();
-        if (after_step) after_step();
-      }
-    }
-    batch.revert();
-    return inject_ ? p_.size() - start : start - p_.size();
   }
 
  private:
@@ -237,13 +200,15 @@ void require_one_radius(const Packing& packing) {
 std::size_t crystal_inject(Packing& packing, Rng& rng, std::size_t max_added,
                            const std::function<void()>& after_step) {
   require_one_radius(packing);
-  return Crystal(packing, rng, true).grow(max_added, after_step);
+  Crystal crystal(packing, rng, true);
+  return detail::grow_crystal<detail::UndoLog>(crystal, true, max_added, after_step);
 }
 
 std::size_t crystal_eject(Packing& packing, Rng& rng, std::size_t max_removed,
                           const std::function<void()>& after_step) {
   require_one_radius(packing);
-  return Crystal(packing, rng, false).grow(max_removed, after_step);
+  Crystal crystal(packing, rng, false);
+  return detail::grow_crystal<detail::UndoLog>(crystal, false, max_removed, after_step);
 }
 
 }  // namespace disktune

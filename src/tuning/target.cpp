@@ -52,6 +52,8 @@ std::size_t count_for(const Target& target, double unit) {
 
 }  // namespace
 
+std::size_t target_count_for_unit(const Target& target, double unit) { return count_for(target, unit); }
+
 std::size_t target_count(const Target& target, double r, double area) {
   return count_for(target, 4 * area / (kPi * r * r));
 }

@@ -4,23 +4,35 @@
 // past the exact count, never lowering the count in an injection phase).
 #pragma once
 
+#include <utility>
 #include <vector>
 
 #include "disktune/packing.h"
+#include "disktune/surface_packing.h"
 
 namespace disktune::detail {
 
-class UndoLog {
- public:
-  explicit UndoLog(Packing& packing) : packing_(packing) {}
+// Where a disk is, and how to put one there, for each kind of packing.
+inline Vec2 position_of(const Packing& p, DiskId id) { return p.center(id); }
+inline DiskId insert_at(Packing& p, Vec2 c, double r, std::uint8_t flags) { return p.insert(c, r, flags); }
+inline SurfacePoint position_of(const SurfacePacking& p, DiskId id) { return p.point(id); }
+inline DiskId insert_at(SurfacePacking& p, const SurfacePoint& c, double, std::uint8_t flags) {
+  return p.insert(c, flags);  // the radius follows from the sizing
+}
 
-  DiskId insert(Vec2 c, double r, std::uint8_t flags = 0) {
-    const DiskId id = packing_.insert(c, r, flags);
+template <class P>
+class BasicUndoLog {
+ public:
+  using Point = decltype(position_of(std::declval<const P&>(), DiskId{}));
+  explicit BasicUndoLog(P& packing) : packing_(packing) {}
+
+  DiskId insert(const Point& c, double r, std::uint8_t flags = 0) {
+    const DiskId id = insert_at(packing_, c, r, flags);
     edits_.push_back({Kind::insert, id, {}, r, flags});
     return id;
   }
-  void move(DiskId id, Vec2 c) {
-    edits_.push_back({Kind::move, id, packing_.center(id), packing_.radius(id), packing_.flags(id)});
+  void move(DiskId id, const Point& c) {
+    edits_.push_back({Kind::move, id, position_of(packing_, id), packing_.radius(id), packing_.flags(id)});
     packing_.move(id, c);
   }
   void set_flags(DiskId id, std::uint8_t flags) {
@@ -28,7 +40,7 @@ class UndoLog {
     packing_.set_flags(id, flags);
   }
   void remove(DiskId id) {
-    edits_.push_back({Kind::remove, id, packing_.center(id), packing_.radius(id), packing_.flags(id)});
+    edits_.push_back({Kind::remove, id, position_of(packing_, id), packing_.radius(id), packing_.flags(id)});
     packing_.remove(id);
   }
 
@@ -59,7 +71,7 @@ class UndoLog {
         case Kind::insert: packing_.remove(id); break;
         case Kind::move: packing_.move(id, e->center); break;
         case Kind::flags: packing_.set_flags(id, e->flags); break;
-        case Kind::remove: renamed.push_back({e->id, packing_.insert(e->center, e->radius, e->flags)}); break;
+        case Kind::remove: renamed.push_back({e->id, insert_at(packing_, e->center, e->radius, e->flags)}); break;
       }
     }
     edits_.resize(mark);
@@ -72,7 +84,7 @@ class UndoLog {
   struct Edit {
     Kind kind;
     DiskId id;
-    Vec2 center;
+    Point center;
     double radius;
     std::uint8_t flags;
   };
@@ -82,8 +94,11 @@ class UndoLog {
     return n;
   }
 
-  Packing& packing_;
+  P& packing_;
   std::vector<Edit> edits_;
 };
+
+using UndoLog = BasicUndoLog<Packing>;
+using SurfaceUndoLog = BasicUndoLog<SurfacePacking>;
 
 }  // namespace disktune::detail

@@ -10,21 +10,11 @@ namespace disktune {
 namespace detail {
 
 Vec2 void_corner(const Packing& packing, const std::vector<Corner>& corners, Rng& rng) {
-  std::vector<double> weighted(corners.size(), 0);
-  double best = -1e300;
-  for (std::size_t i = 0; i < corners.size(); ++i) {
-    double far2 = 0;
-    for (const Corner& c : corners) far2 = std::max(far2, squared_distance(corners[i].point, c.point));
-    weighted[i] = std::sqrt(far2) - packing.radius_at(corners[i].point);
-    best = std::max(best, weighted[i]);
-  }
   // Equal up to rounding: the two ends of a diameter pair under one radius.
-  const double tie = 1e-12 * packing.max_radius();
-  std::vector<std::size_t> top;
-  for (std::size_t i = 0; i < corners.size(); ++i) {
-    if (weighted[i] >= best - tie) top.push_back(i);
-  }
-  return corners[top[uniform_index(rng, top.size())]].point;
+  const std::size_t k = weighted_diameter_index(
+      corners.size(), [&](std::size_t i, std::size_t j) { return squared_distance(corners[i].point, corners[j].point); },
+      [&](std::size_t i) { return packing.radius_at(corners[i].point); }, 1e-12 * packing.max_radius(), rng);
+  return corners[k].point;
 }
 
 bool covers_all(const Packing& packing, Vec2 c, const std::vector<Corner>& corners) {

@@ -2,6 +2,8 @@
 // Shared steps of the tuning operations (internal).
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <vector>
 
@@ -10,6 +12,27 @@
 #include "undo_log.h"
 
 namespace disktune::detail {
+
+/// The index, among n void points, of largest weighted diameter max_j |p_i - p_j| -
+/// radius(i) (d2(i, j): the squared distance), ties within `tie` broken at random: a
+/// fixed choice would add a direction bias to every injected disk. Planar corners and
+/// surface void points both choose through it.
+template <class Distance2, class Radius>
+std::size_t weighted_diameter_index(std::size_t n, Distance2&& d2, Radius&& radius, double tie, Rng& rng) {
+  std::vector<double> weighted(n, 0);
+  double best = -1e300;
+  for (std::size_t i = 0; i < n; ++i) {
+    double far2 = 0;
+    for (std::size_t j = 0; j < n; ++j) far2 = std::max(far2, d2(i, j));
+    weighted[i] = std::sqrt(far2) - radius(i);
+    best = std::max(best, weighted[i]);
+  }
+  std::vector<std::size_t> top;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (weighted[i] >= best - tie) top.push_back(i);
+  }
+  return top[uniform_index(rng, top.size())];
+}
 
 /// The corner a new disk goes to (paper 2.1 and 6.1.1): the one of largest weighted
 /// diameter max_j |c - c_j| - r(c), r from the packing's sizing; for one radius, an end

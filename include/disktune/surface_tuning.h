@@ -1,0 +1,59 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Sampling and density tuning on a curved surface (paper, section 7.2): maximal
+// Poisson-disk sampling, void and repeller injection, sifted and attractor ejection,
+// with the surface void points (surface_voids.h) in place of planar corners. Open
+// boundary curves are sampled first with fixed disks (1D maximal sampling) and stay.
+#pragma once
+
+#include <cstddef>
+#include <functional>
+#include <memory>
+
+#include "disktune/random.h"
+#include "disktune/surface_packing.h"
+#include "disktune/tuning.h"
+
+namespace disktune {
+
+/// A maximal Poisson-disk sample of the surface: the open boundary curves first (1D,
+/// fixed disks), then darts over the surface by area, then every void filled at its
+/// void points until none is left. Conflict-free and maximal.
+SurfacePacking sample_surface_mps(std::shared_ptr<const SurfaceDomain> domain,
+                                  const SurfaceSizing& sizing, Rng& rng);
+
+/// The count at area fraction 1 on the surface: the integral of 4 / (pi r(x)^2).
+double density_unit(const SurfacePacking& packing);
+/// The count a target means on the surface.
+std::size_t target_count(const Target& target, const SurfacePacking& packing);
+
+/// Tunes the count to the target as tune() does in the plane, with the surface's
+/// operations and the same automatic schedule: injection is void, repeller, crystal
+/// injection, then repeller for the last few; ejection is sifting, attractor, crystal
+/// ejection (no crystal phases with a sizing), or one method alone. Angle injection
+/// throws InvalidInput (it needs the periodic Delaunay mesh). Fixed disks never move.
+/// `options.after_surface_operation`, when set, runs after every operation.
+TuneResult tune(SurfacePacking& packing, const Target& target, Rng& rng, const TuneOptions& options = {});
+
+/// Lays the fixed disks of the open boundary out again at even arc length, about
+/// spacing_factor r apart (clamped to [1.05 r, 1.9 r]), removing interior disks they
+/// conflict with and refilling the voids; tune() does this first, at the spacing of a
+/// hexagonal packing of the target count. Closed surfaces and sizings are left alone.
+void respace_surface_boundary(SurfacePacking& packing, double spacing_factor, Rng& rng);
+
+// The single operations; each returns the number of disks added (removed) and leaves the
+// packing conflict-free and maximal; one that would pass `max_added` is taken back.
+std::size_t void_inject(SurfacePacking& packing, DiskId p, Rng& rng, std::size_t max_added);
+std::size_t repeller_inject(SurfacePacking& packing, DiskId p, Rng& rng, std::size_t max_added);
+std::size_t sift_eject(SurfacePacking& packing, DiskId p, Rng& rng, std::size_t max_removed);
+std::size_t attractor_eject(SurfacePacking& packing, DiskId p, Rng& rng, std::size_t max_removed);
+
+/// Crystal growth on the surface (one radius only): a crystal of frozen disks at spacing
+/// r (injection) or sqrt(3) r (ejection) grows over the surface, its sites the points at
+/// that distance from two frozen neighbours; as in the plane (tuning.h), steps past the
+/// target are taken back. `after_step` runs after each kept step.
+std::size_t crystal_inject(SurfacePacking& packing, Rng& rng, std::size_t max_added,
+                           const std::function<void()>& after_step = {});
+std::size_t crystal_eject(SurfacePacking& packing, Rng& rng, std::size_t max_removed,
+                          const std::function<void()>& after_step = {});
+
+}  // namespace disktune

@@ -1,0 +1,47 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Voids on a surface (paper, section 7.2): per triangle, each disk's ball cuts the
+// triangle's plane in a circle, and the uncovered part of the triangle is bounded by
+// those circles and the triangle's edges. Its vertices - two circles meeting, a circle
+// crossing an edge, a triangle corner - are the void points: the triangle is covered
+// exactly when none of them is uncovered, so they both find voids and certify
+// maximality, and each is exactly on the surface.
+#pragma once
+
+#include <vector>
+
+#include "disktune/surface_packing.h"
+
+namespace disktune {
+
+/// An uncovered vertex of a void: where the circles of disks a and b meet (a circle
+/// meeting a triangle edge: b == kNoDisk; a triangle corner: a == b == kNoDisk).
+struct SurfaceVoidPoint {
+  SurfacePoint at;
+  DiskId a = kNoDisk, b = kNoDisk;
+};
+
+/// Appends the void points of triangle t; the disks in `ignore` count as absent.
+void void_points_in_triangle(const SurfacePacking& packing, std::size_t t,
+                             const std::vector<DiskId>& ignore, std::vector<SurfaceVoidPoint>& out);
+
+/// Appends the void points within distance R of q (on every triangle near q).
+void void_points_near(const SurfacePacking& packing, Vec3 q, double R,
+                      const std::vector<DiskId>& ignore, std::vector<SurfaceVoidPoint>& out);
+
+/// True when no triangle has a void point: the surface is covered (up to the tolerance).
+bool is_maximal(const SurfacePacking& packing);
+
+/// The uncovered pieces of the open boundary curves, counting only fixed disks when
+/// `fixed_only`: for each loop of domain().boundary_loops() and each of its edges
+/// (from vertex k to k + 1), intervals [t0, t1] of the edge's parameter.
+struct BoundaryGap {
+  std::size_t loop, edge;
+  double t0, t1;
+};
+std::vector<BoundaryGap> uncovered_boundary(const SurfacePacking& packing, bool fixed_only);
+
+/// Throws InvalidInput unless the packing is non-empty, conflict-free and maximal,
+/// naming a conflicting pair or an uncovered point; `what` names the input.
+void validate_surface_packing(const SurfacePacking& packing, const std::string& what);
+
+}  // namespace disktune

@@ -1,0 +1,286 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// `sample`, `tune`, `mesh` and `report` on a curved surface (--domain FILE.off|.obj|.ply|
+// .stl that is not flat): samples as CSV x,y,z,r, the restricted Delaunay mesh as OFF,
+// OBJ or PLY, and a JSON report. Each command's file dispatches here when
+// names_surface(--domain) holds (command_domain.h decides).
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <sstream>
+
+#include "command_domain.h"
+#include "commands.h"
+#include "disktune/errors.h"
+#include "disktune/io.h"
+#include "disktune/quality.h"
+#include "disktune/quality_json.h"
+#include "disktune/restricted_delaunay.h"
+#include "disktune/surface_io.h"
+#include "disktune/surface_mesh.h"
+#include "disktune/surface_tuning.h"
+#include "disktune/surface_voids.h"
+#include "progress_bar.h"
+
+namespace disktune::cli {
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+void refuse_svg(const std::string& svg, const std::string& command) {
+  if (svg.empty()) return;
+  throw InvalidInput(command +
+                     " --svg: the SVG picture draws the plane (the periodic box or a planar "
+                     "domain) and cannot show disks on a curved surface; leave out --svg and view "
+                     "the surface mesh from 'disktune mesh' (.off, .obj, .ply) in a mesh viewer");
+}
+
+std::size_t fixed_count(const SurfacePacking& packing) {
+  std::size_t n = 0;
+  for (const DiskId id : packing.ids()) n += (packing.flags(id) & kFixed) != 0;
+  return n;
+}
+
+std::string boundary_text(const SurfacePacking& packing) {
+  if (packing.domain().is_closed()) return "";
+  return " (" + std::to_string(fixed_count(packing)) + " on the boundary)";
+}
+
+// The restricted Delaunay mesh of the samples, in id order, with their radii.
+struct SampleMesh {
+  SurfaceMesh mesh;
+  std::vector<double> radius;
+  SurfaceMeshCheck check;
+};
+
+SampleMesh sample_mesh(const SurfacePacking& packing) {
+  SampleMesh out;
+  std::vector<Vec3> samples;
+  for (const DiskId id : packing.ids()) {
+    samples.push_back(packing.center(id));
+    out.radius.push_back(packing.radius(id));
+  }
+  out.mesh = restricted_delaunay(samples, packing.domain());
+  out.check = check_surface_mesh(out.mesh);
+  return out;
+}
+
+// "manifold yes, genus 2 (input genus 2)"
+std::string topology_text(const SurfaceMeshCheck& check, const SurfaceDomain& surface) {
+  std::ostringstream s;
+  s << "manifold " << (check.manifold ? "yes" : "no");
+  if (check.manifold) s << ", genus " << check.genus;
+  s << " (input genus " << surface.genus() << ")";
+  return s.str();
+}
+
+// On stderr when the mesh is no manifold of the input's genus; `done` says what was
+// still done with it ("written", "measured").
+void warn_topology(const SurfaceMeshCheck& check, const SurfaceDomain& surface, const char* done) {
+  if (!check.manifold) {
+    std::fprintf(stderr,
+                 "disktune: warning: the restricted Delaunay mesh is not a manifold (%zu edges in "
+                 "more than two triangles, %zu bow-tie vertices); it was still %s. The samples are "
+                 "too sparse for the surface: use a smaller radius\n",
+                 check.non_manifold_edges, check.non_manifold_vertices, done);
+  } else if (check.genus != surface.genus()) {
+    std::fprintf(stderr,
+                 "disktune: warning: the restricted Delaunay mesh has genus %d, the input surface "
+                 "genus %d; it was still %s. The samples are too sparse to capture the surface's "
+                 "topology: use a smaller radius\n",
+                 check.genus, surface.genus(), done);
+  }
+}
+
+std::string json_string(const std::string& text) {
+  std::string out = "\"";
+  for (const unsigned char c : text) {
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += static_cast<char>(c);
+    } else if (c < 0x20) {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\u%04x", c);
+      out += buf;
+    } else {
+      out += static_cast<char>(c);
+    }
+  }
+  return out + "\"";
+}
+
+std::string json_number(double v) {
+  if (!std::isfinite(v)) return "null";
+  char buf[32];
+  const auto res = std::to_chars(buf, buf + sizeof buf, v);  // shortest round trip
+  return std::string(buf, res.ptr);
+}
+
+}  // namespace
+
+int run_surface_sample(const SampleJob& job) {
+  refuse_svg(job.svg, "sample");
+  check_output_folder(job.output);
+  const CommandDomain domain = open_domain(job.domain);
+  Rng rng(job.seed);
+  const auto t0 = std::chrono::steady_clock::now();
+  const SurfacePacking packing = domain.sample_surface(rng);
+  const double seconds = seconds_since(t0);
+  if (!job.output.empty()) write_surface_csv(job.output, packing);
+  std::printf("sample: %zu disks%s, %s, %.3f s (%s, %s)%s%s\n", packing.size(),
+              boundary_text(packing).c_str(), domain.density_text(packing.size()).c_str(), seconds,
+              domain.radius_text().c_str(), domain.describe().c_str(),
+              job.output.empty() ? "" : " -> ", job.output.c_str());
+  return kExitOk;
+}
+
+int run_surface_tune(const TuneJob& job) {
+  refuse_svg(job.svg, "tune");
+  check_output_folder(job.output);
+  const CommandDomain domain = open_domain(job.domain);
+  const std::size_t target =
+      target_count(job.target, domain.empty_surface_packing());  // fail early
+  Rng rng(job.seed);
+  const auto t0 = std::chrono::steady_clock::now();
+  SurfacePacking packing =
+      job.input.empty() ? domain.sample_surface(rng) : domain.read_surface(job.input, true);
+  const std::size_t start = packing.size();
+
+  ProgressBar bar;
+  TuneOptions options;
+  options.method = job.method;
+  options.on_progress = [&](const Progress& p) {
+    char status[96];
+    std::snprintf(status, sizeof status, "%zu/%zu disks, eta %.4f, %s", p.count, target,
+                  p.area_fraction, to_string(p.phase).c_str());
+    bar.update(static_cast<double>(p.count) - start, static_cast<double>(target) - start, status);
+  };
+  const TuneResult res = tune(packing, job.target, rng, options);
+  bar.clear();
+  const double seconds = seconds_since(t0);
+
+  if (!job.output.empty()) write_surface_csv(job.output, packing);
+  std::printf("tune: %zu -> %zu disks (target %zu%s), %s, phase %s, %.3f s (%s, %s)%s%s\n", start,
+              res.count, res.target, res.reached ? ", reached" : ", NOT reached",
+              domain.density_text(res.count).c_str(), to_string(res.last_phase).c_str(), seconds,
+              domain.radius_text().c_str(), domain.describe().c_str(),
+              job.output.empty() ? "" : " -> ", job.output.c_str());
+  if (!res.reached) {
+    std::fprintf(stderr,
+                 "disktune: the target was not reached: no phase makes progress beyond %zu disks "
+                 "(%s); the closest packing was written\n",
+                 res.count, domain.density_text(res.count).c_str());
+    return kExitNotReached;
+  }
+  return kExitOk;
+}
+
+int run_surface_mesh(const std::string& input, const DomainArgs& domain_args,
+                     const std::string& output) {
+  std::string ext = std::filesystem::path(output).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (ext != ".off" && ext != ".obj" && ext != ".ply") {  // fail before any work
+    throw InvalidInput("cannot write the surface mesh '" + output +
+                       "': unknown extension; supported on a surface: .off, .obj, .ply");
+  }
+  check_output_folder(output);
+  const CommandDomain domain = open_domain(domain_args);
+  const SurfacePacking packing = domain.read_surface(input, false);
+  const auto t0 = std::chrono::steady_clock::now();
+  const SampleMesh m = sample_mesh(packing);
+  const double seconds = seconds_since(t0);
+  write_surface_mesh(output, m.mesh);
+  std::printf(
+      "mesh: %zu disks, %zu vertices, %zu triangles (restricted Delaunay), %s, %.3f s -> %s\n",
+      packing.size(), m.mesh.vertices.size(), m.mesh.triangles.size(),
+      topology_text(m.check, *domain.surface).c_str(), seconds, output.c_str());
+  if (!m.check.problems.empty()) std::printf("mesh: %s\n", m.check.problems.c_str());
+  warn_topology(m.check, *domain.surface, "written");
+  return kExitOk;
+}
+
+int run_surface_report(const SurfaceReportJob& job) {
+  if (!job.svg.empty()) {
+    throw InvalidInput(
+        "report --svg: the SVG picture draws the plane (the periodic box or a planar "
+        "domain); on a surface write the mesh with 'disktune mesh' (.off, .obj, "
+        ".ply) and use --json for the measures");
+  }
+  if (!job.png_dir.empty()) {
+    throw InvalidInput(
+        "report --png-dir: the PNG pictures (spectrum, histograms) are made for the "
+        "periodic box only; use --json for a surface (its histograms are in it)");
+  }
+  if (job.spectrum_window != 0) {
+    throw InvalidInput(
+        "report --spectrum-window: the spectrum needs the periodic box; a surface "
+        "report has none");
+  }
+  check_output_folder(job.json);
+  const CommandDomain domain = open_domain(job.domain);
+  const SurfacePacking packing = domain.read_surface(job.input, false);
+  const SurfaceDomain& surface = *domain.surface;
+
+  bool conflict_free = true;
+  for (const DiskId id : packing.ids()) {
+    if (packing.conflicts(packing.center(id), id)) {
+      conflict_free = false;
+      break;
+    }
+  }
+  const bool maximal = is_maximal(packing);
+  const SampleMesh m = sample_mesh(packing);
+  SurfaceMeshQuality q = measure_surface_mesh(m.mesh, m.radius);
+  q.hausdorff = hausdorff_distance(m.mesh, surface, 10000, 1);
+  const double eta = static_cast<double>(packing.size()) / domain.unit;
+  const double rho = std::sqrt(eta * 2 * std::sqrt(3.0) / 3.14159265358979323846);
+
+  if (!job.json.empty()) {
+    std::ostringstream j;
+    j << "{\n  \"surface\": {\"file\": " << json_string(domain.file)
+      << ", \"vertices\": " << surface.vertices().size()
+      << ", \"triangles\": " << surface.triangles().size() << ", \"genus\": " << surface.genus()
+      << ", \"boundary_loops\": " << surface.boundary_loops().size()
+      << ", \"area\": " << json_number(surface.area()) << "},\n"
+      << "  \"sizing\": " << json_string(domain.radius_text()) << ",\n"
+      << "  \"min_radius\": " << json_number(packing.sizing().min_radius()) << ",\n"
+      << "  \"max_radius\": " << json_number(packing.sizing().max_radius()) << ",\n"
+      << "  \"count\": " << packing.size() << ",\n"
+      << "  \"boundary_count\": " << fixed_count(packing) << ",\n"
+      << "  \"area_fraction\": " << json_number(eta) << ",\n"
+      << "  \"relative_radius\": " << json_number(rho) << ",\n"
+      << "  \"maximal\": " << (maximal ? "true" : "false") << ",\n"
+      << "  \"conflict_free\": " << (conflict_free ? "true" : "false") << ",\n"
+      << "  \"mesh_check\": {\"manifold\": " << (m.check.manifold ? "true" : "false")
+      << ", \"oriented\": " << (m.check.oriented ? "true" : "false")
+      << ", \"genus\": " << m.check.genus << ", \"components\": " << m.check.components
+      << ", \"boundary_edges\": " << m.check.boundary_edges
+      << ", \"non_manifold_edges\": " << m.check.non_manifold_edges
+      << ", \"non_manifold_vertices\": " << m.check.non_manifold_vertices
+      << ", \"isolated_vertices\": " << m.check.isolated_vertices
+      << ", \"problems\": " << json_string(m.check.problems) << "},\n"
+      << "  \"mesh\": " << quality_json(q) << "\n}\n";
+    const std::string text = j.str();
+    write_file_atomically(job.json, [&](std::ostream& out) { out << text; });
+  }
+  std::printf(
+      "report: %zu disks%s, eta = %.4f, rho = %.4f, %s, %s; mesh: %zu vertices, %zu triangles, "
+      "%s, angles %.2f..%.2f deg (mean |a-60| %.2f), beta <= %.4f, Hausdorff %.4g%s%s\n",
+      packing.size(), boundary_text(packing).c_str(), eta, rho, maximal ? "maximal" : "NOT maximal",
+      conflict_free ? "conflict-free" : "CONFLICTS", m.mesh.vertices.size(),
+      m.mesh.triangles.size(), topology_text(m.check, surface).c_str(), q.angles.min, q.angles.max,
+      q.angles.mean_abs_dev_60, q.local_beta.max, q.hausdorff, job.json.empty() ? "" : " -> ",
+      job.json.c_str());
+  if (!m.check.problems.empty()) std::printf("report: %s\n", m.check.problems.c_str());
+  warn_topology(m.check, surface, "measured");
+  return kExitOk;
+}
+
+}  // namespace disktune::cli

@@ -1,0 +1,49 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The shape measures shared by planar and surface meshes (internal): each path computes
+// its triangles' angles and circumradii in its own space, then the statistics, the edge
+// lengths and local beta are gathered here once.
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "disktune/quality.h"
+
+namespace disktune::detail {
+
+/// A corner's angle in degrees from |u x v| and u . v of its two sides: atan2 stays
+/// accurate near 0 and 180 degrees, where acos of a rounded cosine does not.
+inline double corner_angle_deg(double cross_norm, double dot) {
+  return std::atan2(cross_norm, dot) * 57.295779513082320876798;
+}
+
+/// One triangle as the measures see it.
+struct TriangleShape {
+  std::array<double, 3> angles_deg;  // at its three corners
+  double circumradius;
+};
+
+/// Angle statistics over the triangles. Throws InvalidInput when there are none.
+QualityReport::Angles angle_statistics(const std::vector<TriangleShape>& shapes);
+
+struct MeshShape {
+  QualityReport::Angles angles;
+  QualityReport::Edges edges;           // each edge over the mean radius of its ends
+  QualityReport::LocalBeta local_beta;  // vertices off the boundary only
+  std::size_t interior_vertex_count = 0;
+};
+
+/// Angles, edges (each once) and local beta: the largest circumradius around a vertex
+/// over its shortest edge, for vertices on no boundary edge (an edge of one triangle).
+/// Throws InvalidInput when there are no triangles.
+MeshShape measure_mesh_shape(std::size_t vertex_count,
+                             const std::vector<std::array<std::uint32_t, 3>>& triangles,
+                             const std::vector<TriangleShape>& shapes,
+                             const std::function<double(std::uint32_t, std::uint32_t)>& edge_length,
+                             const std::vector<double>& vertex_radius);
+
+}  // namespace disktune::detail

@@ -1,0 +1,54 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Shape measures of a surface mesh: the triangles' angles and circumradii in space, the
+// rest shared with planar meshes (mesh_shape.h).
+#include <string>
+
+#include "disktune/errors.h"
+#include "disktune/quality.h"
+#include "mesh_shape.h"
+
+namespace disktune {
+
+SurfaceMeshQuality measure_surface_mesh(const SurfaceMesh& mesh, const std::vector<double>& vertex_radius) {
+  if (mesh.triangles.empty()) throw InvalidInput("measure_surface_mesh: the mesh has no triangles");
+  if (vertex_radius.size() != mesh.vertices.size()) {
+    throw InvalidInput("measure_surface_mesh: " + std::to_string(vertex_radius.size()) +
+                       " radii for " + std::to_string(mesh.vertices.size()) +
+                       " vertices; give one radius per vertex");
+  }
+  std::vector<detail::TriangleShape> shapes;
+  shapes.reserve(mesh.triangles.size());
+  for (const auto& t : mesh.triangles) {
+    for (const std::uint32_t v : t) {
+      if (v >= mesh.vertices.size()) {
+        throw InvalidInput("measure_surface_mesh: a triangle names vertex " + std::to_string(v) +
+                           " of " + std::to_string(mesh.vertices.size()));
+      }
+    }
+    const Vec3 p[3] = {mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]};
+    detail::TriangleShape s;
+    for (int k = 0; k < 3; ++k) {
+      const Vec3 u = p[(k + 1) % 3] - p[k], v = p[(k + 2) % 3] - p[k];
+      s.angles_deg[k] = detail::corner_angle_deg(norm(cross(u, v)), dot(u, v));
+    }
+    // R = abc / (4 area) = abc / (2 |u x v|).
+    const Vec3 u = p[1] - p[0], v = p[2] - p[0];
+    s.circumradius = norm(u) * norm(v) * norm(p[2] - p[1]) / (2 * norm(cross(u, v)));
+    shapes.push_back(s);
+  }
+  const auto length = [&](std::uint32_t a, std::uint32_t b) {
+    return norm(mesh.vertices[a] - mesh.vertices[b]);
+  };
+  const detail::MeshShape m =
+      detail::measure_mesh_shape(mesh.vertices.size(), mesh.triangles, shapes, length, vertex_radius);
+  SurfaceMeshQuality q;
+  q.vertex_count = mesh.vertices.size();
+  q.triangle_count = mesh.triangles.size();
+  q.interior_vertex_count = m.interior_vertex_count;
+  q.angles = m.angles;
+  q.edges = m.edges;
+  q.local_beta = m.local_beta;
+  return q;
+}
+
+}  // namespace disktune

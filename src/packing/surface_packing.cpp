@@ -1,0 +1,210 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "disktune/surface_packing.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "disktune/errors.h"
+#include "disktune/tolerance.h"
+
+namespace disktune {
+
+// ---- SpaceGrid ----
+
+std::int64_t SpaceGrid::coord(double v) const { return static_cast<std::int64_t>(std::floor(v / cell_)); }
+
+std::uint64_t SpaceGrid::pack(std::int64_t i, std::int64_t j, std::int64_t k) {
+  // 21 bits per axis around the origin: two million cells each way is plenty, and
+  // coordinates past it only share cells (slower, never wrong).
+  const auto b = [](std::int64_t v) { return static_cast<std::uint64_t>(v + (1 << 20)) & 0x1fffff; };
+  return b(i) | b(j) << 21 | b(k) << 42;
+}
+
+std::uint64_t SpaceGrid::key(Vec3 p) const { return pack(coord(p.x), coord(p.y), coord(p.z)); }
+
+void SpaceGrid::remove(std::uint32_t id, Vec3 p) {
+  const auto it = cells_.find(key(p));
+  if (it == cells_.end()) return;
+  auto& v = it->second;
+  const auto at = std::find(v.begin(), v.end(), id);
+  if (at != v.end()) {
+    *at = v.back();
+    v.pop_back();
+  }
+  if (v.empty()) cells_.erase(it);
+}
+
+// ---- SurfaceIndex ----
+
+SurfaceIndex::SurfaceIndex(std::shared_ptr<const SurfaceDomain> domain, double cell)
+    : domain_(std::move(domain)), grid_(cell) {
+  const auto& v = domain_->vertices();
+  const auto& tris = domain_->triangles();
+  planes_.reserve(tris.size());
+  cumulative_area_.reserve(tris.size());
+  double area = 0;
+  std::vector<std::uint64_t> keys;
+  for (std::size_t t = 0; t < tris.size(); ++t) {
+    const Vec3 a = v[tris[t][0]], b = v[tris[t][1]], c = v[tris[t][2]];
+    planes_.emplace_back(a, b, c);
+    area += 0.5 * norm(cross(b - a, c - a));
+    cumulative_area_.push_back(area);
+    // Register the cells of a barycentric grid of points at most cell/2 apart: every
+    // point of the triangle is then within cell/2 of a registered cell, which
+    // triangles_near's margin of one cell covers.
+    const double longest = std::sqrt(std::max({squared_norm(b - a), squared_norm(c - b), squared_norm(a - c)}));
+    const int n = std::max(1, static_cast<int>(std::ceil(longest / (0.5 * cell))));
+    keys.clear();
+    for (int i = 0; i <= n; ++i)
+      for (int j = 0; i + j <= n; ++j) keys.push_back(grid_.key(a + (b - a) * (double(i) / n) + (c - a) * (double(j) / n)));
+    std::sort(keys.begin(), keys.end());
+    keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+    for (const std::uint64_t k : keys) grid_.insert_in_cell(static_cast<std::uint32_t>(t), k);
+  }
+  // The one triangle at each boundary edge, by the edge's vertex pair.
+  std::unordered_map<std::uint64_t, std::uint32_t> by_edge;
+  auto edge_key = [](std::uint64_t a, std::uint64_t b) { return a < b ? a << 32 | b : b << 32 | a; };
+  for (std::size_t t = 0; t < tris.size(); ++t)
+    for (int k = 0; k < 3; ++k) by_edge[edge_key(tris[t][k], tris[t][(k + 1) % 3])] = static_cast<std::uint32_t>(t);
+  for (const auto& loop : domain_->boundary_loops()) {
+    boundary_triangle_.emplace_back();
+    for (std::size_t k = 0; k < loop.size(); ++k)
+      boundary_triangle_.back().push_back(by_edge.at(edge_key(loop[k], loop[(k + 1) % loop.size()])));
+  }
+}
+
+SurfacePoint SurfaceIndex::on_boundary(std::size_t l, std::size_t k, double s) const {
+  const auto& loop = domain_->boundary_loops()[l];
+  const Vec3 a = domain_->vertices()[loop[k]], b = domain_->vertices()[loop[(k + 1) % loop.size()]];
+  return {a + (b - a) * s, boundary_triangle_[l][k]};
+}
+
+void SurfaceIndex::triangles_near(Vec3 q, double R, std::vector<std::uint32_t>& out) const {
+  out.clear();
+  grid_.for_each_in_box(q, R + grid_.cell(), [&](std::uint32_t t) { out.push_back(t); });
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+}
+
+Vec3 SurfaceIndex::closest_point(std::size_t t, Vec3 p) const {
+  // Region tests over the triangle's Voronoi regions (vertices, edges, face).
+  const auto& tri = domain_->triangles()[t];
+  const Vec3 a = domain_->vertices()[tri[0]], b = domain_->vertices()[tri[1]], c = domain_->vertices()[tri[2]];
+  const Vec3 ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = dot(ab, ap), d2 = dot(ac, ap);
+  if (d1 <= 0 && d2 <= 0) return a;
+  const Vec3 bp = p - b;
+  const double d3 = dot(ab, bp), d4 = dot(ac, bp);
+  if (d3 >= 0 && d4 <= d3) return b;
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0) return a + ab * (d1 / (d1 - d3));
+  const Vec3 cp = p - c;
+  const double d5 = dot(ab, cp), d6 = dot(ac, cp);
+  if (d6 >= 0 && d5 <= d6) return c;
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0) return a + ac * (d2 / (d2 - d6));
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0) return b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)));
+  const double denom = 1 / (va + vb + vc);
+  return a + ab * (vb * denom) + ac * (vc * denom);
+}
+
+SurfacePoint SurfaceIndex::point_by_area(double u1, double u2, double u3) const {
+  const double target = u1 * cumulative_area_.back();
+  const std::size_t t = std::min<std::size_t>(
+      std::upper_bound(cumulative_area_.begin(), cumulative_area_.end(), target) - cumulative_area_.begin(),
+      cumulative_area_.size() - 1);
+  // Uniform in the triangle: fold the unit square's upper half back.
+  double s = u2, w = u3;
+  if (s + w > 1) s = 1 - s, w = 1 - w;
+  const auto& tri = domain_->triangles()[t];
+  const Vec3 a = domain_->vertices()[tri[0]], b = domain_->vertices()[tri[1]], c = domain_->vertices()[tri[2]];
+  return {a + (b - a) * s + (c - a) * w, static_cast<std::uint32_t>(t)};
+}
+
+// ---- SurfacePacking ----
+
+namespace {
+double index_cell(const SurfaceDomain& domain, const SurfaceSizing& sizing) {
+  // Cells of about two radii, but never so small that a huge mesh floods the map.
+  const Vec3 ext = domain.bbox_max() - domain.bbox_min();
+  const double diag = norm(ext);
+  return std::max(2 * sizing.max_radius(), diag * 1e-4);
+}
+}  // namespace
+
+SurfacePacking::SurfacePacking(std::shared_ptr<const SurfaceDomain> domain, SurfaceSizing sizing)
+    : index_(std::make_shared<const SurfaceIndex>(domain, index_cell(*domain, sizing))),
+      sizing_(std::make_shared<const SurfaceSizing>(std::move(sizing))),
+      grid_(sizing_->max_radius()) {
+  if (!sizing_->is_constant() && sizing_->vertex_radii().size() != domain->vertices().size()) {
+    throw InvalidInput("surface packing: the sizing has " + std::to_string(sizing_->vertex_radii().size()) +
+                       " vertex radii but the surface has " + std::to_string(domain->vertices().size()) +
+                       " vertices; make the sizing for this surface");
+  }
+}
+
+double SurfacePacking::radius_at(const SurfacePoint& q) const {
+  return sizing_->is_constant() ? sizing_->max_radius() : sizing_->radius(domain(), q.p, q.triangle);
+}
+
+DiskId SurfacePacking::insert(const SurfacePoint& q, std::uint8_t flags) {
+  DiskId id;
+  if (!free_ids_.empty()) {
+    id = free_ids_.back();
+    free_ids_.pop_back();
+  } else {
+    id = static_cast<DiskId>(radius_.size());
+    point_.push_back({});
+    radius_.push_back(0);
+    flags_.push_back(0);
+  }
+  point_[id] = q;
+  radius_[id] = radius_at(q);
+  flags_[id] = flags;
+  grid_.insert(id, q.p);
+  ++live_;
+  return id;
+}
+
+void SurfacePacking::remove(DiskId id) {
+  grid_.remove(id, point_[id].p);
+  radius_[id] = 0;
+  flags_[id] = 0;
+  free_ids_.push_back(id);
+  --live_;
+}
+
+void SurfacePacking::move(DiskId id, const SurfacePoint& q) {
+  grid_.remove(id, point_[id].p);
+  point_[id] = q;
+  radius_[id] = radius_at(q);
+  grid_.insert(id, q.p);
+}
+
+std::vector<DiskId> SurfacePacking::ids() const {
+  std::vector<DiskId> out;
+  out.reserve(live_);
+  for (DiskId i = 0; i < id_bound(); ++i)
+    if (alive(i)) out.push_back(i);
+  return out;
+}
+
+bool SurfacePacking::conflicts(Vec3 q, DiskId ignore1, DiskId ignore2) const {
+  bool hit = false;
+  for_each_near(q, max_radius(), [&](DiskId j) {
+    if (!hit && j != ignore1 && j != ignore2 && is_conflict(squared_norm(point_[j].p - q), radius_[j])) hit = true;
+  });
+  return hit;
+}
+
+bool SurfacePacking::covered(Vec3 q, DiskId ignore1, DiskId ignore2) const {
+  bool hit = false;
+  for_each_near(q, max_radius() * (1 + kRelTol), [&](DiskId j) {
+    if (!hit && j != ignore1 && j != ignore2 && is_covered(squared_norm(point_[j].p - q), radius_[j])) hit = true;
+  });
+  return hit;
+}
+
+}  // namespace disktune

@@ -1,0 +1,65 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Maximal Poisson-disk sampling on a surface: the open boundary curves first (1D darts
+// into the uncovered parts of the boundary edges, as fixed disks), then darts over the
+// surface by area, then every remaining void filled at its void points, each new disk
+// queuing the void points around it, until no void point is left.
+#include <algorithm>
+
+#include "disktune/errors.h"
+#include "disktune/surface_tuning.h"
+#include "disktune/surface_voids.h"
+
+namespace disktune {
+namespace {
+
+void sample_boundary(SurfacePacking& packing, Rng& rng) {
+  const SurfaceDomain& d = packing.domain();
+  if (d.is_closed()) return;
+  for (;;) {
+    const std::vector<BoundaryGap> gaps = uncovered_boundary(packing, true);
+    if (gaps.empty()) return;
+    // A dart uniform over the uncovered length.
+    std::vector<double> cumulative;
+    double total = 0;
+    for (const BoundaryGap& g : gaps) {
+      const auto& loop = d.boundary_loops()[g.loop];
+      total += (g.t1 - g.t0) * norm(d.vertices()[loop[(g.edge + 1) % loop.size()]] - d.vertices()[loop[g.edge]]);
+      cumulative.push_back(total);
+    }
+    const std::size_t k = std::min<std::size_t>(
+        std::upper_bound(cumulative.begin(), cumulative.end(), uniform01(rng) * total) - cumulative.begin(),
+        gaps.size() - 1);
+    const BoundaryGap& g = gaps[k];
+    packing.insert(packing.index().on_boundary(g.loop, g.edge, g.t0 + (g.t1 - g.t0) * uniform01(rng)), kFixed);
+  }
+}
+
+}  // namespace
+
+SurfacePacking sample_surface_mps(std::shared_ptr<const SurfaceDomain> domain, const SurfaceSizing& sizing, Rng& rng) {
+  SurfacePacking packing(std::move(domain), sizing);
+  sample_boundary(packing, rng);
+  // Darts: about twice the count at area fraction 1 (an MPS reaches about half of it).
+  const std::size_t darts = static_cast<std::size_t>(2 * density_unit(packing)) + 16;
+  for (std::size_t k = 0; k < darts; ++k) {
+    const double u1 = uniform01(rng), u2 = uniform01(rng), u3 = uniform01(rng);
+    const SurfacePoint q = packing.index().point_by_area(u1, u2, u3);
+    if (!packing.covered(q.p)) packing.insert(q);
+  }
+  // Fill what the darts missed, in random order.
+  std::vector<SurfaceVoidPoint> work;
+  for (std::size_t t = 0; t < packing.domain().triangles().size(); ++t) void_points_in_triangle(packing, t, {}, work);
+  for (std::size_t i = work.size(); i > 1; --i) std::swap(work[i - 1], work[uniform_index(rng, i)]);
+  while (!work.empty()) {
+    const SurfaceVoidPoint v = work.back();
+    work.pop_back();
+    if (packing.covered(v.at.p, v.a, v.b) || packing.conflicts(v.at.p)) continue;
+    const DiskId id = packing.insert(v.at);
+    const std::size_t first = work.size();
+    void_points_near(packing, v.at.p, packing.radius(id) * (1 + 1e-6), {}, work);
+    for (std::size_t i = work.size(); i > first + 1; --i) std::swap(work[i - 1], work[first + uniform_index(rng, i - first)]);
+  }
+  return packing;
+}
+
+}  // namespace disktune

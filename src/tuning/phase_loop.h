@@ -1,0 +1,149 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The phase loop of the scheduler (paper, section 4), for any kind of packing (planar
+// and surface): sweeps of one operation over all disks in random order, moving to the
+// next phase at the area-fraction thresholds or when a sweep stops paying, and
+// stopping the moment the count is the target.
+#pragma once
+
+#include <chrono>
+#include <cmath>
+#include <functional>
+#include <vector>
+
+#include "disktune/errors.h"
+#include "disktune/surface_tuning.h"
+#include "disktune/tuning.h"
+
+namespace disktune::detail {
+
+template <class P>
+struct PhasePlan {
+  Phase phase;
+  // A per-disk operation, applied to every disk in random order in one sweep...
+  std::size_t (*op)(P&, DiskId, Rng&, std::size_t);
+  // ...or a whole sweep at once (crystal growth, angle injection).
+  std::size_t (*sweep)(P&, Rng&, std::size_t, const std::function<void()>&);
+  double until;       // area fraction at which the automatic schedule moves on (>= 1: never)
+  bool thaw = false;  // unfreeze the crystal first, so its disks can move again
+};
+
+/// Throws InvalidInput when a single method's direction (adding or removing disks)
+/// disagrees with the target's.
+inline void check_direction(Method method, bool eject) {
+  const bool ejects = method == Method::sift_ejection || method == Method::attractor_ejection ||
+                      method == Method::crystal_ejection;
+  if (method != Method::automatic && ejects != eject) {
+    throw InvalidInput(eject ? "tune: the target is below the current count, but the method adds "
+                               "disks; use an ejection method (or automatic)"
+                             : "tune: the target is above the current count, but the method removes "
+                               "disks; use an injection method (or automatic)");
+  }
+}
+
+/// The phases for a method, in order. Injection phases move on at their area fraction
+/// (automatic schedule) or when they stall; ejection phases when they stall. No crystal
+/// growth for varying radii (paper, 6); `angle` is null where angle injection is not
+/// defined (surfaces), and asking for it then throws InvalidInput.
+template <class P>
+std::vector<PhasePlan<P>> plan_for(const TuneOptions& o, bool eject, bool one_radius,
+                                   std::size_t (*angle)(P&, Rng&, std::size_t, const std::function<void()>&)) {
+  using Plan = PhasePlan<P>;
+  const Plan void_phase{Phase::void_injection, &void_inject, nullptr, o.void_until};
+  const Plan repeller_phase{Phase::repeller_injection, &repeller_inject, nullptr, o.repeller_until};
+  const Plan crystal_phase{Phase::crystal_injection, nullptr, &crystal_inject, 2.0};
+  const Plan angle_phase{Phase::angle_injection, nullptr, angle, 2.0};
+  const Plan sift_phase{Phase::sift_ejection, &sift_eject, nullptr, 2.0};
+  const Plan attractor_phase{Phase::attractor_ejection, &attractor_eject, nullptr, 2.0};
+  const Plan crystal_eject_phase{Phase::crystal_ejection, nullptr, &crystal_eject, 2.0};
+  auto alone = [](Plan p) { return p.until = 2.0, std::vector<Plan>{p}; };
+  // Crystal steps near the exact target can all overshoot (the voids a step refills need
+  // more disks than are left to add); repeller injection then adds the last few.
+  Plan finish = repeller_phase;
+  finish.until = 2.0;
+  finish.thaw = true;
+  check_direction(o.method, eject);
+  switch (o.method) {
+    case Method::automatic:
+      if (eject) return one_radius ? std::vector<Plan>{sift_phase, attractor_phase, crystal_eject_phase}
+                                   : std::vector<Plan>{sift_phase, attractor_phase};
+      // Without crystal growth the repeller phase is the last: it runs until it stalls.
+      return one_radius ? std::vector<Plan>{void_phase, repeller_phase, crystal_phase, finish}
+                        : std::vector<Plan>{void_phase, finish};
+    case Method::void_injection: return alone(void_phase);
+    case Method::repeller_injection: return alone(repeller_phase);
+    case Method::crystal_injection: return {crystal_phase, finish};
+    case Method::angle_injection:
+      if (!angle) {
+        throw InvalidInput("tune: angle injection triangulates the periodic box; here use void, "
+                           "repeller or crystal injection (or automatic)");
+      }
+      return alone(angle_phase);
+    case Method::sift_ejection: return alone(sift_phase);
+    case Method::attractor_ejection: return alone(attractor_phase);
+    case Method::crystal_ejection: return alone(crystal_eject_phase);
+  }
+  return {};
+}
+
+/// Runs the phases in order until the count is `goal` or none makes progress; `unit` is
+/// the count at area fraction 1, `after_op(packing)` (if set) runs after each operation.
+template <class P, class AfterOp>
+TuneResult run_phases(P& packing, double unit, std::size_t goal, const std::vector<PhasePlan<P>>& plans, Rng& rng,
+                      const TuneOptions& options, const AfterOp& after_op, std::chrono::steady_clock::time_point t0) {
+  TuneResult result;
+  result.target = goal;
+  const bool eject = result.target < packing.size();
+  // Disks still to add or remove: what each operation may change at most.
+  auto missing = [&] {
+    return eject ? packing.size() - result.target : result.target - packing.size();
+  };
+  auto eta = [&] { return static_cast<double>(packing.size()) / unit; };
+  auto report = [&](Phase phase) {
+    if (options.on_progress) options.on_progress({packing.size(), eta(), phase});
+  };
+
+  // One sweep of a phase: a whole-packing sweep, or its operation on every disk in
+  // random order.
+  auto run_sweep = [&](const PhasePlan<P>& plan) {
+    if (plan.sweep) {
+      std::size_t steps = 0;
+      plan.sweep(packing, rng, missing(), [&] {
+        if (after_op) after_op(packing);
+        if (++steps % 256 == 0) report(plan.phase);
+      });
+      return;
+    }
+    std::vector<DiskId> order = packing.ids();
+    for (std::size_t i = order.size(); i > 1; --i) std::swap(order[i - 1], order[uniform_index(rng, i)]);
+    const std::size_t tick = std::max<std::size_t>(order.size() / 64, 1);
+    for (std::size_t k = 0; k < order.size() && missing() > 0; ++k) {
+      if (!packing.alive(order[k])) continue;
+      plan.op(packing, order[k], rng, missing());
+      if (after_op) after_op(packing);
+      if (k % tick == 0) report(plan.phase);
+    }
+  };
+
+  for (const PhasePlan<P>& plan : plans) {
+    if (missing() == 0) break;
+    result.last_phase = plan.phase;
+    if (plan.thaw) {
+      for (const DiskId id : packing.ids()) packing.set_flags(id, packing.flags(id) & ~kFrozen);
+    }
+    for (int k = 0; k < options.max_sweeps_per_phase; ++k) {
+      if (missing() == 0 || (!eject && eta() >= plan.until)) break;
+      const std::size_t before = packing.size();
+      run_sweep(plan);
+      ++result.sweeps;
+      report(plan.phase);
+      const double gain = std::abs(static_cast<double>(packing.size()) - static_cast<double>(before));
+      if (gain < std::max(options.min_gain_per_sweep * static_cast<double>(before), 0.5)) break;
+    }
+  }
+  result.count = packing.size();
+  result.reached = result.count == result.target;
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return result;
+}
+
+}  // namespace disktune::detail

@@ -1,0 +1,106 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Sifted and attractor ejection on a surface (paper, 3, 3.1 and 7.2): as in the plane,
+// with covering positions found among the vertices of the balls around the void points.
+#include <algorithm>
+#include <cmath>
+
+#include "disktune/surface_tuning.h"
+#include "surface_repair.h"
+
+namespace disktune {
+namespace {
+
+std::vector<SurfaceVoidPoint> joined(std::vector<SurfaceVoidPoint> a, const std::vector<SurfaceVoidPoint>& b) {
+  a.insert(a.end(), b.begin(), b.end());
+  return a;
+}
+
+}  // namespace
+
+std::size_t sift_eject(SurfacePacking& packing, DiskId p, Rng& rng, std::size_t max_removed) {
+  if ((packing.flags(p) & (kFixed | kFrozen)) || max_removed == 0) return 0;
+  const Vec3 cp = packing.center(p);
+  const double rp = packing.radius(p);
+  // p lone: its void alone may already be covered by the others.
+  if (detail::voids_near(packing, cp, detail::void_reach(rp), {p}).empty()) {
+    packing.remove(p);
+    return 1;
+  }
+  for (const DiskId q : detail::mobile_neighbors(packing, cp, rp, p, rng)) {
+    const Vec3 cq = packing.center(q);
+    const double rq = packing.radius(q);
+    const auto voids = joined(detail::voids_near(packing, cp, detail::void_reach(rp), {p, q}),
+                              detail::voids_near(packing, cq, detail::void_reach(rq), {p, q}));
+    const Vec3 mid = (cp + cq) * 0.5;
+    detail::SurfaceUndoLog log(packing);
+    log.remove(p);
+    log.remove(q);
+    const auto spots = detail::covering_positions(packing, voids, mid, 0.5 * norm(cp - cq) + std::max(rp, rq), kNoDisk);
+    if (spots.empty()) {
+      log.revert();
+      continue;
+    }
+    log.insert(spots[uniform_index(rng, spots.size())], 0);
+    // Exact check of the two regions: the void points bound the void only when its arcs
+    // are short, and this does not rely on it.
+    if (detail::void_free_near(packing, cp, rp) && detail::void_free_near(packing, cq, rq)) return 1;
+    log.revert();
+  }
+  return 0;
+}
+
+namespace detail {
+
+std::size_t attractor_eject(SurfaceUndoLog& log, SurfacePacking& packing, DiskId p, Rng& rng, std::size_t max_removed) {
+  if ((packing.flags(p) & (kFixed | kFrozen)) || max_removed == 0) return 0;
+  const std::size_t mark = log.mark();
+  const Vec3 cp = packing.center(p);
+  const double rp = packing.radius(p);
+  // Each neighbour moves as close to p as it can while still covering its own void,
+  // into p's disk if it likes: p will go, or move where it conflicts with none.
+  for (const DiskId q : detail::mobile_neighbors(packing, cp, rp, p, rng)) {
+    const Vec3 cq = packing.center(q);
+    const double rq = packing.radius(q);
+    const auto voids = detail::voids_near(packing, cq, detail::void_reach(rq), {q});
+    if (voids.empty()) continue;
+    const auto spots = detail::covering_positions(packing, voids, cq, 2 * rq, q, p, &cp);
+    const SurfacePoint* best = nullptr;
+    double best_d2 = squared_norm(cq - cp) * (1 - 1e-9);
+    for (const SurfacePoint& s : spots) {
+      const double d2 = squared_norm(s.p - cp);
+      if (d2 < best_d2) best = &s, best_d2 = d2;
+    }
+    if (!best) continue;
+    const std::size_t before = log.mark();
+    log.move(q, *best);
+    if (!detail::void_free_near(packing, cq, rq)) log.revert_to(before);
+  }
+  log.remove(p);
+  const auto voids = voids_near(packing, cp, void_reach(rp));
+  if (voids.empty()) return 1;
+  // p's void is still there: p comes back where it covers it best, if it can.
+  const auto spots = detail::covering_positions(packing, voids, cp, 2 * rp, kNoDisk);
+  if (spots.empty()) {
+    log.revert_to(mark);
+    return 0;
+  }
+  std::size_t pick = 0;
+  double pick_far = 1e300;
+  for (std::size_t i = 0; i < spots.size(); ++i) {
+    double far = 0;
+    for (const SurfaceVoidPoint& v : voids) far = std::max(far, squared_norm(v.at.p - spots[i].p));
+    if (far < pick_far) pick = i, pick_far = far;
+  }
+  log.insert(spots[pick], 0);
+  if (!detail::void_free_near(packing, cp, rp)) log.revert_to(mark);
+  return 0;
+}
+
+}  // namespace detail
+
+std::size_t attractor_eject(SurfacePacking& packing, DiskId p, Rng& rng, std::size_t max_removed) {
+  detail::SurfaceUndoLog log(packing);
+  return detail::attractor_eject(log, packing, p, rng, max_removed);
+}
+
+}  // namespace disktune

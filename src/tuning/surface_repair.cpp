@@ -1,0 +1,120 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "surface_repair.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "../voids/triangle_arrangement.h"
+#include "disktune/tolerance.h"
+#include "void_repair.h"
+
+namespace disktune::detail {
+
+std::vector<SurfaceVoidPoint> voids_near(const SurfacePacking& packing, Vec3 q, double R,
+                                         const std::vector<DiskId>& ignore) {
+  std::vector<SurfaceVoidPoint> out;
+  void_points_near(packing, q, R, ignore, out);
+  return out;
+}
+
+bool void_free_near(const SurfacePacking& packing, Vec3 c, double r) {
+  return voids_near(packing, c, void_reach(r)).empty();
+}
+
+SurfacePoint void_point_choice(const SurfacePacking& packing, const std::vector<SurfaceVoidPoint>& voids, Rng& rng) {
+  const std::size_t k = weighted_diameter_index(
+      voids.size(), [&](std::size_t i, std::size_t j) { return squared_norm(voids[i].at.p - voids[j].at.p); },
+      [&](std::size_t i) { return packing.radius_at(voids[i].at); }, 1e-12 * packing.max_radius(), rng);
+  return voids[k].at;
+}
+
+bool covers_all(const SurfacePacking& packing, const SurfacePoint& c, const std::vector<SurfaceVoidPoint>& voids) {
+  const double r = packing.radius_at(c);
+  const double inside = packing.sizing().is_constant() ? r : r * (1 - 1e-7);
+  for (const SurfaceVoidPoint& v : voids) {
+    if (!is_covered(squared_norm(c.p - v.at.p), inside)) return false;
+  }
+  return true;
+}
+
+namespace {
+
+// The void points once each (a crossing on an edge is found from both triangles).
+std::vector<Vec3> distinct_points(const std::vector<SurfaceVoidPoint>& voids, double tol) {
+  std::vector<Vec3> out;
+  for (const SurfaceVoidPoint& v : voids) {
+    bool seen = false;
+    for (const Vec3& w : out) seen = seen || squared_norm(w - v.at.p) <= tol * tol;
+    if (!seen) out.push_back(v.at.p);
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<SurfacePoint> covering_positions(const SurfacePacking& packing, const std::vector<SurfaceVoidPoint>& voids,
+                                             Vec3 near, double R, DiskId self, DiskId passable,
+                                             const Vec3* toward) {
+  std::vector<SurfacePoint> out;
+  if (voids.empty()) return out;
+  // Balls of the smallest radius near the voids; with a sizing the true radius differs
+  // from place to place, so smaller balls are tried until some vertex qualifies.
+  double r = packing.max_radius();
+  for (const SurfaceVoidPoint& v : voids) r = std::min(r, packing.radius_at(v.at));
+  const std::vector<Vec3> points = distinct_points(voids, 1e-9 * r);
+  // Only triangles within r of every void point can hold a position.
+  std::vector<std::uint32_t> tris, kept;
+  packing.index().triangles_near(points.front(), r, tris);
+  for (const std::uint32_t t : tris) {
+    bool reach = true;
+    for (const Vec3& v : points) reach = reach && squared_norm(packing.index().closest_point(t, v) - v) <= r * r;
+    if (reach) kept.push_back(t);
+  }
+  // The feasible set is bounded by the balls around the void points and by the other
+  // disks' spheres (a position must not conflict): its vertices are among those of
+  // the arrangement of both.
+  std::vector<Ball> conflict_balls;
+  packing.for_each_near(points.front(), r + packing.max_radius(), [&](DiskId j) {
+    if (j != self && j != passable) conflict_balls.push_back({packing.center(j), packing.radius(j) * (1 + 2 * kRelTol), j});
+  });
+  std::vector<Ball> balls;
+  for (const double shrink : {1.0, 0.95, 0.85, 0.7}) {
+    if (shrink < 1 && packing.sizing().is_constant()) break;
+    balls = conflict_balls;
+    for (const Vec3& v : points) balls.push_back({v, r * shrink, kNoDisk});
+    for (const std::uint32_t t : kept) {
+      for_each_arrangement_vertex(packing.index().plane(t), balls, kRelTol * r, [&](Vec3 p, DiskId, DiskId) {
+        const SurfacePoint x{p, t};
+        if (squared_norm(p - near) <= R * R && covers_all(packing, x, voids) && !packing.conflicts(p, self, passable))
+          out.push_back(x);
+      }, toward);
+    }
+    if (!out.empty()) break;
+  }
+  return out;
+}
+
+std::vector<DiskId> mobile_neighbors(const SurfacePacking& packing, Vec3 point, double r, DiskId self, Rng& rng) {
+  std::vector<DiskId> near;
+  packing.for_each_near(point, r + packing.max_radius(), [&](DiskId j) {
+    if (j == self || (packing.flags(j) & (kFixed | kFrozen))) return;
+    const double reach = r + packing.radius(j);
+    if (squared_norm(packing.center(j) - point) < reach * reach) near.push_back(j);
+  });
+  std::sort(near.begin(), near.end());  // grid order is not deterministic across rehashes
+  for (std::size_t i = near.size(); i > 1; --i) std::swap(near[i - 1], near[uniform_index(rng, i)]);
+  return near;
+}
+
+std::size_t repair_void(SurfaceUndoLog& log, const SurfacePacking& packing, Vec3 q, double R, Rng& rng,
+                        std::size_t max_added) {
+  for (std::size_t added = 0;; ++added) {
+    const std::vector<SurfaceVoidPoint> voids = voids_near(packing, q, R);
+    if (voids.empty()) return added;
+    if (added == max_added) return max_added + 1;
+    const SurfacePoint at = void_point_choice(packing, voids, rng);
+    log.insert(at, 0);
+  }
+}
+
+}  // namespace disktune::detail

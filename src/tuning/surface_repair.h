@@ -1,0 +1,56 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Shared steps of the surface tuning operations (internal): the surface counterparts
+// of void_repair.h, with void points in place of planar corners.
+#pragma once
+
+#include <vector>
+
+#include "disktune/random.h"
+#include "disktune/surface_voids.h"
+#include "undo_log.h"
+
+namespace disktune::detail {
+
+/// The region a lifted disk's void lies in: its ball, with a hair of slack.
+inline double void_reach(double r) { return r * (1 + 1e-6); }
+
+/// The void points within R of q, with the disks in `ignore` lifted.
+std::vector<SurfaceVoidPoint> voids_near(const SurfacePacking& packing, Vec3 q, double R,
+                                         const std::vector<DiskId>& ignore = {});
+
+/// True when no void point lies within the ball of radius r around c (with void_reach's
+/// slack): the exact check of a region after the disks covering it changed.
+bool void_free_near(const SurfacePacking& packing, Vec3 c, double r);
+
+/// The void point a new disk goes to: largest weighted diameter (void_repair.h).
+SurfacePoint void_point_choice(const SurfacePacking& packing, const std::vector<SurfaceVoidPoint>& voids, Rng& rng);
+
+/// True when a disk at c (radius radius_at(c)) contains every void point, so it covers
+/// the void they bound (per triangle a void lies in the convex hull of its points).
+/// With a sizing each must lie inside by 1e-7 r (see void_repair.h's covers_all).
+bool covers_all(const SurfacePacking& packing, const SurfacePoint& c, const std::vector<SurfaceVoidPoint>& voids);
+
+/// Positions within R of `near` where a disk covers every void point (covers_all) and
+/// conflicts with no disk but `self` and `passable`: the vertices of the arrangement of
+/// the balls around the void points and the other disks' spheres, cut with the triangles
+/// there, so each is exactly on the surface. With `toward`, also the points of those
+/// circles nearest it (where the nearest feasible position may lie).
+std::vector<SurfacePoint> covering_positions(const SurfacePacking& packing, const std::vector<SurfaceVoidPoint>& voids,
+                                             Vec3 near, double R, DiskId self, DiskId passable = kNoDisk,
+                                             const Vec3* toward = nullptr);
+
+/// The disks that can move (not fixed, not frozen) whose disk overlaps one of radius r at `point`,
+/// except `self`, in random order.
+std::vector<DiskId> mobile_neighbors(const SurfacePacking& packing, Vec3 point, double r, DiskId self, Rng& rng);
+
+/// Fills the voids within R of q by injecting at void_point_choice until none is left.
+/// Returns the number injected, or max_added + 1 as soon as more would be needed.
+std::size_t repair_void(SurfaceUndoLog& log, const SurfacePacking& packing, Vec3 q, double R, Rng& rng,
+                        std::size_t max_added);
+
+/// Attractor ejection of p (surface_tuning.h), its edits recorded in `log` (taken back
+/// to where they started when it fails), so that a caller can take it back too.
+std::size_t attractor_eject(SurfaceUndoLog& log, SurfacePacking& packing, DiskId p, Rng& rng, std::size_t max_removed);
+
+
+}  // namespace disktune::detail

@@ -1,0 +1,145 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Surface void points: per triangle, the arrangement vertices (triangle_arrangement.h)
+// of the balls meeting it that no other disk covers. Completeness: an uncovered
+// component of a triangle touching the triangle's boundary has a corner or an edge
+// crossing on its boundary; one inside it is bounded by circle arcs, so by
+// circle-circle crossings (the outside of a single circle always reaches the edges).
+#include "disktune/surface_voids.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "disktune/errors.h"
+#include "disktune/tolerance.h"
+#include "triangle_arrangement.h"
+
+namespace disktune {
+namespace {
+
+bool ignored(const std::vector<DiskId>& ignore, DiskId id) {
+  return std::find(ignore.begin(), ignore.end(), id) != ignore.end();
+}
+
+// True when q lies in a closed disk other than a, b and the ignored ones.
+bool covered_by_others(const SurfacePacking& packing, Vec3 q, DiskId a, DiskId b, const std::vector<DiskId>& ignore) {
+  bool hit = false;
+  packing.for_each_near(q, packing.max_radius() * (1 + kRelTol), [&](DiskId j) {
+    if (hit || j == a || j == b || ignored(ignore, j)) return;
+    if (is_covered(squared_norm(packing.center(j) - q), packing.radius(j))) hit = true;
+  });
+  return hit;
+}
+
+// The void points of triangle t; with R finite, only those within R of q, from the
+// disks that can reach that far.
+void collect(const SurfacePacking& packing, std::size_t t, Vec3 q, double R, const std::vector<DiskId>& ignore,
+             std::vector<SurfaceVoidPoint>& out) {
+  const SurfaceIndex& index = packing.index();
+  const TrianglePlane& plane = index.plane(t);
+  const auto& tri = packing.domain().triangles()[t];
+  const auto& v = packing.domain().vertices();
+  const Vec3 centroid = (v[tri[0]] + v[tri[1]] + v[tri[2]]) * (1.0 / 3);
+  double reach = 0;
+  for (int k = 0; k < 3; ++k) reach = std::max(reach, norm(v[tri[k]] - centroid));
+  Vec3 around = centroid;
+  if (std::isfinite(R) && R < reach) around = q, reach = R;  // a small region: search around q
+  const double r_max = packing.max_radius();
+  thread_local std::vector<Ball> balls;
+  balls.clear();
+  packing.for_each_near(around, reach + r_max * (1 + kRelTol), [&](DiskId j) {
+    if (ignored(ignore, j)) return;
+    const Vec3 c = packing.center(j);
+    const double r = packing.radius(j);
+    if (squared_norm(index.closest_point(t, c) - c) <= r * r * (1 + 4 * kRelTol)) balls.push_back({c, r, j});
+  });
+  const double R2 = std::isfinite(R) ? R * R : std::numeric_limits<double>::infinity();
+  const double tol = kRelTol * r_max;
+  for_each_arrangement_vertex(plane, balls, tol, [&](Vec3 p, DiskId a, DiskId b) {
+    if (squared_norm(p - q) > R2) return;
+    if (!covered_by_others(packing, p, a, b, ignore)) out.push_back({{p, static_cast<std::uint32_t>(t)}, a, b});
+  });
+}
+
+}  // namespace
+
+void void_points_in_triangle(const SurfacePacking& packing, std::size_t t, const std::vector<DiskId>& ignore,
+                             std::vector<SurfaceVoidPoint>& out) {
+  collect(packing, t, {}, std::numeric_limits<double>::infinity(), ignore, out);
+}
+
+void void_points_near(const SurfacePacking& packing, Vec3 q, double R, const std::vector<DiskId>& ignore,
+                      std::vector<SurfaceVoidPoint>& out) {
+  thread_local std::vector<std::uint32_t> tris;
+  packing.index().triangles_near(q, R, tris);
+  const std::vector<std::uint32_t> mine = tris;  // collect may query triangles_near again
+  for (const std::uint32_t t : mine) collect(packing, t, q, R, ignore, out);
+}
+
+bool is_maximal(const SurfacePacking& packing) {
+  std::vector<SurfaceVoidPoint> found;
+  for (std::size_t t = 0; t < packing.domain().triangles().size(); ++t) {
+    void_points_in_triangle(packing, t, {}, found);
+    if (!found.empty()) return false;
+  }
+  return true;
+}
+
+std::vector<BoundaryGap> uncovered_boundary(const SurfacePacking& packing, bool fixed_only) {
+  std::vector<BoundaryGap> gaps;
+  const auto& v = packing.domain().vertices();
+  const auto& loops = packing.domain().boundary_loops();
+  std::vector<std::array<double, 2>> covered;
+  for (std::size_t l = 0; l < loops.size(); ++l) {
+    for (std::size_t e = 0; e < loops[l].size(); ++e) {
+      const Vec3 a = v[loops[l][e]], b = v[loops[l][(e + 1) % loops[l].size()]], d = b - a;
+      const double len = norm(d);
+      covered.clear();
+      packing.for_each_near(a + d * 0.5, 0.5 * len + packing.max_radius() * (1 + kRelTol), [&](DiskId j) {
+        if (fixed_only && !(packing.flags(j) & kFixed)) return;
+        // |a + s d - c|^2 <= r^2 (with the coverage slack) for s in [s0, s1].
+        const Vec3 f = a - packing.center(j);
+        const double rr = packing.radius(j) * (1 + kRelTol);
+        const double A = dot(d, d), B = dot(f, d), C = dot(f, f) - rr * rr;
+        const double disc = B * B - A * C;
+        if (disc < 0) return;
+        const double root = std::sqrt(disc);
+        const double s0 = std::max(0.0, (-B - root) / A), s1 = std::min(1.0, (-B + root) / A);
+        if (s0 <= s1) covered.push_back({s0, s1});
+      });
+      std::sort(covered.begin(), covered.end());
+      double reach = 0;
+      for (const auto& c : covered) {
+        if (c[0] > reach) gaps.push_back({l, e, reach, c[0]});
+        reach = std::max(reach, c[1]);
+      }
+      if (reach < 1) gaps.push_back({l, e, reach, 1});
+    }
+  }
+  return gaps;
+}
+
+void validate_surface_packing(const SurfacePacking& packing, const std::string& what) {
+  if (packing.empty()) throw InvalidInput(what + ": no disks");
+  std::ostringstream msg;
+  for (const DiskId i : packing.ids()) {
+    const Vec3 c = packing.center(i);
+    if (packing.conflicts(c, i)) {
+      msg << what << ": the disk centered at (" << c.x << ", " << c.y << ", " << c.z
+          << ") lies inside another disk (a conflict); sample the surface again";
+      throw InvalidInput(msg.str());
+    }
+  }
+  std::vector<SurfaceVoidPoint> found;
+  for (std::size_t t = 0; t < packing.domain().triangles().size(); ++t) {
+    void_points_in_triangle(packing, t, {}, found);
+    if (found.empty()) continue;
+    const Vec3 p = found.front().at.p;
+    msg << what << ": the point (" << p.x << ", " << p.y << ", " << p.z << ") of triangle " << t
+        << " is covered by no disk (the packing is not maximal); sample the surface again";
+    throw InvalidInput(msg.str());
+  }
+}
+
+}  // namespace disktune

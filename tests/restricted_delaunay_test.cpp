@@ -1,0 +1,344 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Surface resampling's output mesh: the restricted Delaunay triangulation of well-spread
+// samples on the data surfaces (topology, orientation, distance), the topology check on
+// hand-made defects, the surface mesh measures, the writer and the JSON report.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <tuple>
+
+#include "disktune/quality.h"
+#include "disktune/quality_json.h"
+#include "disktune/random.h"
+#include "disktune/restricted_delaunay.h"
+#include "test_util.h"
+
+namespace disktune {
+namespace {
+
+using test::message_of;
+using test::TempDir;
+using Tris = std::vector<std::array<std::uint32_t, 3>>;
+
+SurfaceDomain surface(const std::string& name) {
+  return read_surface(std::string(DISKTUNE_DATA_DIR) + "/surfaces/" + name);
+}
+
+double diagonal(const SurfaceDomain& s) { return norm(s.bbox_max() - s.bbox_min()); }
+
+// Samples no two closer than h, from many area-weighted random points on the triangles
+// (a greedy thinning through a grid of cell h): dense and well spread, like a disk
+// sampling of radius h, without depending on the sampler.
+std::vector<Vec3> spread_samples(const SurfaceDomain& s, double h, std::uint64_t seed) {
+  const auto& v = s.vertices();
+  std::vector<double> cumulative;
+  double total = 0;
+  for (const auto& t : s.triangles()) {
+    cumulative.push_back(total += norm(cross(v[t[1]] - v[t[0]], v[t[2]] - v[t[0]])));
+  }
+  Rng rng(seed);
+  std::map<std::tuple<long, long, long>, std::vector<std::size_t>> grid;
+  const auto cell = [&](double x) { return static_cast<long>(std::floor(x / h)); };
+  std::vector<Vec3> out;
+  const auto candidates = static_cast<std::size_t>(30 * s.area() / (h * h));
+  for (std::size_t k = 0; k < candidates; ++k) {
+    const double pick = uniform01(rng) * total;
+    const std::size_t i = std::min<std::size_t>(
+        std::upper_bound(cumulative.begin(), cumulative.end(), pick) - cumulative.begin(),
+        cumulative.size() - 1);
+    const auto& t = s.triangles()[i];
+    const double a = std::sqrt(uniform01(rng)), b = uniform01(rng);
+    const Vec3 p = v[t[0]] * (1 - a) + v[t[1]] * (a * (1 - b)) + v[t[2]] * (a * b);
+    const long cx = cell(p.x), cy = cell(p.y), cz = cell(p.z);
+    bool near = false;
+    for (long dx = -1; dx <= 1 && !near; ++dx)
+      for (long dy = -1; dy <= 1 && !near; ++dy)
+        for (long dz = -1; dz <= 1 && !near; ++dz) {
+          const auto it = grid.find({cx + dx, cy + dy, cz + dz});
+          if (it == grid.end()) continue;
+          for (const std::size_t q : it->second) near = near || norm(out[q] - p) < h;
+        }
+    if (near) continue;
+    grid[{cx, cy, cz}].push_back(out.size());
+    out.push_back(p);
+  }
+  return out;
+}
+
+// Six times the enclosed volume (signed by the triangles' orientation).
+template <class Verts, class TriList>
+double signed_volume6(const Verts& v, const TriList& tris) {
+  double sum = 0;
+  for (const auto& t : tris) sum += dot(v[t[0]], cross(v[t[1]], v[t[2]]));
+  return sum;
+}
+
+// Sampling density as a fraction of the bounding box diagonal; the largest round
+// fractions at which every tried seed gave a manifold of the right genus (measured:
+// see the report in the commit).
+constexpr double kSphereH = 0.05, kEightH = 0.03;
+
+TEST(RestrictedDelaunay, SphereIsAClosedGenusZeroManifoldFacingOut) {
+  const SurfaceDomain sphere = surface("sphere.off");
+  const double h = kSphereH * diagonal(sphere);
+  for (const std::uint64_t seed : {1, 2, 3}) {
+    const std::vector<Vec3> samples = spread_samples(sphere, h, seed);
+    const SurfaceMesh mesh = restricted_delaunay(samples, sphere);
+    const SurfaceMeshCheck c = check_surface_mesh(mesh);
+    EXPECT_TRUE(c.manifold) << c.problems;
+    EXPECT_TRUE(c.oriented) << c.problems;
+    EXPECT_EQ(c.components, 1u);
+    EXPECT_EQ(c.genus, 0);
+    EXPECT_EQ(c.boundary_edges, 0u);
+    EXPECT_EQ(c.isolated_vertices, 0u);
+    EXPECT_EQ(c.problems, "");
+    // A closed genus-0 triangulation: F = 2V - 4.
+    EXPECT_EQ(mesh.triangles.size(), 2 * samples.size() - 4);
+    // Facing the way the input does (outward): the same sign of enclosed volume.
+    EXPECT_GT(signed_volume6(mesh.vertices, mesh.triangles) *
+                  signed_volume6(sphere.vertices(), sphere.triangles()), 0);
+    const double d = hausdorff_distance(mesh, sphere, 20000, seed);
+    EXPECT_GT(d, 0);
+    EXPECT_LT(d, 0.25 * h);
+  }
+}
+
+TEST(RestrictedDelaunay, EightHasGenusTwo) {
+  const SurfaceDomain eight = surface("eight.off");
+  ASSERT_EQ(eight.genus(), 2);
+  const double h = kEightH * diagonal(eight);
+  for (const std::uint64_t seed : {1, 2}) {
+    const SurfaceMesh mesh = restricted_delaunay(spread_samples(eight, h, seed), eight);
+    const SurfaceMeshCheck c = check_surface_mesh(mesh);
+    EXPECT_EQ(c.problems, "");
+    EXPECT_TRUE(c.manifold && c.oriented);
+    EXPECT_EQ(c.components, 1u);
+    EXPECT_EQ(c.genus, 2);
+    EXPECT_EQ(c.boundary_edges, 0u);
+    EXPECT_LT(hausdorff_distance(mesh, eight, 20000, seed), 0.6 * h);
+  }
+}
+
+// Many samples on each flat face of the polyhedral sphere are coplanar up to rounding:
+// the triangulation is full of flat slivers, whose dual edges only exact constructions
+// get right (with rounded circumcenters 9 seeds in 10 gave non-manifold edges here).
+// The same input must also give the same mesh, triangle for triangle.
+TEST(RestrictedDelaunay, DenseCoplanarSamplesStayManifoldAndDeterministic) {
+  const SurfaceDomain sphere = surface("sphere.off");
+  const std::vector<Vec3> samples = spread_samples(sphere, 0.02 * diagonal(sphere), 2);
+  const SurfaceMesh mesh = restricted_delaunay(samples, sphere);
+  const SurfaceMeshCheck c = check_surface_mesh(mesh);
+  EXPECT_EQ(c.problems, "");
+  EXPECT_EQ(c.genus, 0);
+  EXPECT_EQ(mesh.triangles.size(), 2 * samples.size() - 4);
+  EXPECT_EQ(restricted_delaunay(samples, sphere).triangles, mesh.triangles);
+}
+
+TEST(RestrictedDelaunay, SparseSamplesOnEightAreReportedWithTheFix) {
+  const SurfaceDomain eight = surface("eight.off");
+  const SurfaceMesh mesh = restricted_delaunay(spread_samples(eight, 0.2 * diagonal(eight), 1), eight);
+  const SurfaceMeshCheck c = check_surface_mesh(mesh);
+  EXPECT_FALSE(c.manifold && c.oriented && c.genus == 2 && c.isolated_vertices == 0);
+  EXPECT_NE(c.problems.find("sample more densely (a smaller radius)"), std::string::npos)
+      << c.problems;
+}
+
+TEST(RestrictedDelaunay, RepeatedSamplesStayIsolatedVertices) {
+  const SurfaceDomain sphere = surface("sphere.off");
+  std::vector<Vec3> samples = spread_samples(sphere, kSphereH * diagonal(sphere), 5);
+  const SurfaceMesh once = restricted_delaunay(samples, sphere);
+  samples.push_back(samples[7]);
+  samples.push_back(samples[0]);
+  const SurfaceMesh twice = restricted_delaunay(samples, sphere);
+  EXPECT_EQ(twice.triangles, once.triangles);  // the first copy keeps its index
+  EXPECT_EQ(twice.vertices.size(), once.vertices.size() + 2);
+  EXPECT_EQ(check_surface_mesh(twice).isolated_vertices, 2u);
+}
+
+TEST(RestrictedDelaunay, RefusesTooFewOrNonFiniteSamples) {
+  const SurfaceDomain sphere = surface("sphere.off");
+  const std::vector<Vec3> three = {{0, 0, 0.5}, {0, 0.5, 0}, {0.5, 0, 0}};
+  EXPECT_NE(message_of([&] { restricted_delaunay(three, sphere); }).find("at least 4"),
+            std::string::npos);
+  std::vector<Vec3> bad = {{0, 0, 0.5}, {0, 0.5, 0}, {0.5, 0, 0}, {0, 0, -0.5}};
+  bad[2].y = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_NE(message_of([&] { restricted_delaunay(bad, sphere); }).find("sample 2"),
+            std::string::npos);
+  const std::vector<Vec3> line = {{0, 0, 0}, {0, 0, 1}, {0, 0, 2}, {0, 0, 3}};
+  EXPECT_THROW(restricted_delaunay(line, sphere), InvalidInput);
+}
+
+TEST(RestrictedDelaunay, HausdorffIsZeroForTheSurfaceItselfAndSeesAScaling) {
+  const SurfaceDomain sphere = surface("sphere.off");
+  SurfaceMesh same{sphere.vertices(), {}};
+  for (const auto& t : sphere.triangles()) {
+    same.triangles.push_back({static_cast<std::uint32_t>(t[0]), static_cast<std::uint32_t>(t[1]),
+                              static_cast<std::uint32_t>(t[2])});
+  }
+  EXPECT_LT(hausdorff_distance(same, sphere, 5000, 1), 1e-12);
+  // Scaled by 1.1 about the center, radius about 0.5: every point moves about 0.05.
+  SurfaceMesh scaled = same;
+  const Vec3 center = (sphere.bbox_min() + sphere.bbox_max()) * 0.5;
+  for (Vec3& p : scaled.vertices) p = center + (p - center) * 1.1;
+  const double d = hausdorff_distance(scaled, sphere, 5000, 1);
+  EXPECT_GT(d, 0.045);
+  EXPECT_LT(d, 0.055);
+  EXPECT_EQ(d, hausdorff_distance(scaled, sphere, 5000, 1));  // same seed, same answer
+  EXPECT_THROW(hausdorff_distance(SurfaceMesh{sphere.vertices(), {}}, sphere, 10, 1), InvalidInput);
+}
+
+// --- check_surface_mesh on hand-made meshes ---
+
+const std::vector<Vec3> kTetra = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+const Tris kTetraTris = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}};  // outward
+
+TEST(SurfaceMeshCheck, ClosedAndOpenTetrahedron) {
+  const SurfaceMeshCheck closed = check_surface_mesh({kTetra, kTetraTris});
+  EXPECT_TRUE(closed.manifold && closed.oriented);
+  EXPECT_EQ(closed.genus, 0);
+  EXPECT_EQ(closed.components, 1u);
+  EXPECT_EQ(closed.boundary_edges, 0u);
+  EXPECT_EQ(closed.problems, "");
+
+  const SurfaceMeshCheck open = check_surface_mesh({kTetra, {kTetraTris.begin(), kTetraTris.end() - 1}});
+  EXPECT_TRUE(open.manifold && open.oriented);
+  EXPECT_EQ(open.boundary_edges, 3u);  // one boundary loop: V - E + F = 4 - 6 + 3 = 1 = 2 - 0 - 1
+  EXPECT_EQ(open.genus, 0);
+  EXPECT_EQ(open.components, 1u);
+  EXPECT_EQ(open.problems, "");
+}
+
+TEST(SurfaceMeshCheck, TorusGridHasGenusOne) {
+  // A 4 x 3 grid with both sides wrapped, each quad split: a combinatorial torus.
+  const std::uint32_t n = 4, m = 3;
+  SurfaceMesh torus;
+  torus.vertices.resize(n * m);
+  const auto id = [&](std::uint32_t i, std::uint32_t j) { return (i % n) * m + (j % m); };
+  for (std::uint32_t i = 0; i < n; ++i) {
+    for (std::uint32_t j = 0; j < m; ++j) {
+      torus.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+      torus.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+  }
+  const SurfaceMeshCheck c = check_surface_mesh(torus);
+  EXPECT_TRUE(c.manifold && c.oriented) << c.problems;
+  EXPECT_EQ(c.genus, 1);
+  EXPECT_EQ(c.components, 1u);
+  // Two tetrahedra apart: two components, genus 0 in all.
+  SurfaceMesh two{kTetra, kTetraTris};
+  for (const Vec3& p : kTetra) two.vertices.push_back(p + Vec3{5, 0, 0});
+  for (const auto& t : kTetraTris) two.triangles.push_back({t[0] + 4, t[1] + 4, t[2] + 4});
+  EXPECT_EQ(check_surface_mesh(two).components, 2u);
+  EXPECT_EQ(check_surface_mesh(two).genus, 0);
+}
+
+TEST(SurfaceMeshCheck, FindsANonManifoldEdge) {
+  // Three triangles on edge 0-1.
+  const SurfaceMesh fin{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}},
+                        {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}}};
+  const SurfaceMeshCheck c = check_surface_mesh(fin);
+  EXPECT_FALSE(c.manifold);
+  EXPECT_EQ(c.non_manifold_edges, 1u);
+  EXPECT_EQ(c.genus, -1);
+  EXPECT_NE(c.problems.find("1 edge(s) in more than two triangles"), std::string::npos);
+  EXPECT_NE(c.problems.find("sample more densely (a smaller radius)"), std::string::npos);
+}
+
+TEST(SurfaceMeshCheck, FindsABowTieVertex) {
+  // Two triangles meeting only at vertex 0.
+  const SurfaceMesh bow{{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {-1, 0, 0}, {-1, -1, 0}},
+                        {{0, 1, 2}, {0, 3, 4}}};
+  const SurfaceMeshCheck c = check_surface_mesh(bow);
+  EXPECT_FALSE(c.manifold);
+  EXPECT_EQ(c.non_manifold_vertices, 1u);
+  EXPECT_EQ(c.non_manifold_edges, 0u);
+  EXPECT_EQ(c.components, 1u);
+  EXPECT_NE(c.problems.find("bow ties"), std::string::npos);
+}
+
+TEST(SurfaceMeshCheck, FindsInconsistentOrientationAndIsolatedVertices) {
+  Tris flipped = kTetraTris;
+  std::swap(flipped[2][1], flipped[2][2]);
+  std::vector<Vec3> five = kTetra;
+  five.push_back({9, 9, 9});
+  const SurfaceMeshCheck c = check_surface_mesh({five, flipped});
+  EXPECT_TRUE(c.manifold);
+  EXPECT_FALSE(c.oriented);
+  EXPECT_EQ(c.isolated_vertices, 1u);
+  EXPECT_NE(c.problems.find("orientation"), std::string::npos);
+  EXPECT_NE(c.problems.find("1 vertex(es) in no triangle"), std::string::npos);
+  EXPECT_THROW(check_surface_mesh({kTetra, {{0, 1, 7}}}), InvalidInput);
+  EXPECT_THROW(check_surface_mesh({kTetra, {{0, 1, 1}}}), InvalidInput);
+}
+
+// --- measures ---
+
+TEST(SurfaceMeshQuality, EquilateralTrianglesInSpace) {
+  // Two equilateral triangles of side 2 sharing an edge, folded out of any axis plane.
+  const double s3 = std::sqrt(3.0);
+  const SurfaceMesh pair{{{0, 0, 0}, {2, 0, 0}, {1, s3 / 2, 1.5}, {1, -s3 / 2, -1.5}},
+                         {{0, 1, 2}, {1, 0, 3}}};
+  const SurfaceMeshQuality q = measure_surface_mesh(pair, std::vector<double>(4, 1.0));
+  EXPECT_EQ(q.vertex_count, 4u);
+  EXPECT_EQ(q.triangle_count, 2u);
+  EXPECT_NEAR(q.angles.min, 60, 1e-9);
+  EXPECT_NEAR(q.angles.max, 60, 1e-9);
+  EXPECT_EQ(q.angles.fraction_50_70, 1.0);
+  EXPECT_EQ(q.angles.histogram.counts[60], 6u);
+  EXPECT_NEAR(q.edges.min_over_r, 2, 1e-12);
+  EXPECT_NEAR(q.edges.max_over_r, 2, 1e-12);
+  EXPECT_EQ(q.interior_vertex_count, 0u);  // every vertex is on the boundary
+
+  // A regular tetrahedron (closed): beta = circumradius / side = 1 / sqrt(3) everywhere.
+  const SurfaceMesh tetra{{{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}},
+                          {{0, 1, 2}, {0, 3, 1}, {0, 2, 3}, {1, 3, 2}}};
+  const SurfaceMeshQuality t = measure_surface_mesh(tetra, std::vector<double>(4, 2.0));
+  EXPECT_EQ(t.interior_vertex_count, 4u);
+  EXPECT_NEAR(t.local_beta.min, 1 / s3, 1e-12);
+  EXPECT_NEAR(t.local_beta.max, 1 / s3, 1e-12);
+  EXPECT_NEAR(t.edges.min_over_r, std::sqrt(8.0) / 2, 1e-12);
+  EXPECT_NEAR(t.angles.mean_abs_dev_60, 0, 1e-9);
+
+  EXPECT_THROW(measure_surface_mesh({pair.vertices, {}}, std::vector<double>(4, 1.0)), InvalidInput);
+  EXPECT_THROW(measure_surface_mesh(pair, std::vector<double>(3, 1.0)), InvalidInput);
+}
+
+TEST(SurfaceMeshQuality, JsonReportCarriesTheMeasures) {
+  const SurfaceMesh tetra{kTetra, kTetraTris};
+  SurfaceMeshQuality q = measure_surface_mesh(tetra, std::vector<double>(4, 1.0));
+  q.hausdorff = 0.125;
+  const auto j = nlohmann::json::parse(quality_json(q));
+  EXPECT_EQ(j["triangle_count"], 4);
+  EXPECT_EQ(j["hausdorff"], 0.125);
+  EXPECT_EQ(j["angles"]["max"], q.angles.max);
+  EXPECT_EQ(j["edges"]["histogram"]["bin_width"], 0.01);
+  EXPECT_EQ(j["local_beta"]["min"], q.local_beta.min);
+}
+
+// --- writing ---
+
+TEST(SurfaceMeshIo, RoundTripsThroughEachFormatAndRefusesOthers) {
+  TempDir dir;
+  const double third = 1.0 / 3;  // needs all 17 digits to read back exactly
+  const SurfaceMesh mesh{{{0, 0, 0}, {1, 0, third}, {0, 1, 0}, {0, 0, 1.0 / 7}}, kTetraTris};
+  for (const std::string name : {"m.off", "m.OBJ", "m.ply"}) {
+    write_surface_mesh(dir.file(name), mesh);
+    const SurfaceDomain back = read_surface(dir.file(name));
+    EXPECT_EQ(back.vertices(), mesh.vertices) << name;
+    ASSERT_EQ(back.triangles().size(), mesh.triangles.size()) << name;
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+      for (int k = 0; k < 3; ++k) EXPECT_EQ(back.triangles()[t][k], mesh.triangles[t][k]) << name;
+    }
+  }
+  const std::string msg = message_of([&] { write_surface_mesh(dir.file("m.xyz"), mesh); });
+  EXPECT_NE(msg.find(".off, .obj, .ply"), std::string::npos) << msg;
+  EXPECT_FALSE(std::filesystem::exists(dir.file("m.xyz")));
+  EXPECT_THROW(write_surface_mesh(dir.file("missing/m.off"), mesh), IoError);
+}
+
+}  // namespace
+}  // namespace disktune

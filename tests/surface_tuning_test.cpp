@@ -1,0 +1,162 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Sampling and tuning on surfaces, judged by the independent surface oracle.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "disktune/surface_tuning.h"
+#include "disktune/surface_voids.h"
+#include "surface_checks.h"
+#include "test_util.h"
+
+namespace disktune {
+namespace {
+
+using test::surface_file;
+using test::surface_report;
+
+double diagonal(const SurfaceDomain& d) { return norm(d.bbox_max() - d.bbox_min()); }
+
+struct Case {
+  const char* file;
+  double r_over_diagonal;
+};
+// A closed sphere, a closed genus-2 surface, an open surface (a boundary loop).
+const Case kCases[] = {{"sphere.off", 0.05}, {"eight.off", 0.04}, {"mesh_with_border.off", 0.02}};
+
+TEST(SurfaceMps, MaximalAndConflictFreeOnRealSurfaces) {
+  for (const Case& c : kCases) {
+    const auto domain = surface_file(c.file);
+    for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+      Rng rng(seed);
+      const SurfacePacking packing =
+          sample_surface_mps(domain, SurfaceSizing::constant(c.r_over_diagonal * diagonal(*domain)), rng);
+      SCOPED_TRACE(std::string(c.file) + " seed " + std::to_string(seed));
+      EXPECT_SURFACE_OK(packing);
+      EXPECT_TRUE(is_maximal(packing));
+      EXPECT_GT(packing.size(), 50u);
+      // An MPS covers about half the area fraction unit (0.5 to 0.6 in the plane).
+      const double eta = packing.size() / density_unit(packing);
+      EXPECT_GT(eta, 0.4);
+      EXPECT_LT(eta, 0.75);
+    }
+  }
+}
+
+TEST(SurfaceMps, OpenBoundaryHasFixedDisksOnIt) {
+  const auto domain = surface_file("mesh_with_border.off");
+  Rng rng(7);
+  const SurfacePacking packing = sample_surface_mps(domain, SurfaceSizing::constant(0.03 * diagonal(*domain)), rng);
+  std::size_t fixed = 0;
+  for (const DiskId id : packing.ids()) fixed += (packing.flags(id) & kFixed) ? 1 : 0;
+  EXPECT_GT(fixed, 10u);
+  EXPECT_TRUE(uncovered_boundary(packing, true).empty());
+  EXPECT_TRUE(surface_report(packing).boundary_ok()) << surface_report(packing).summary();
+}
+
+TEST(SurfaceMps, SameSeedSameSample) {
+  const auto domain = surface_file("eight.off");
+  Rng a(5), b(5);
+  const auto p = sample_surface_mps(domain, SurfaceSizing::constant(0.05 * diagonal(*domain)), a);
+  const auto q = sample_surface_mps(domain, SurfaceSizing::constant(0.05 * diagonal(*domain)), b);
+  ASSERT_EQ(p.size(), q.size());
+  for (const DiskId id : p.ids()) EXPECT_EQ(p.center(id), q.center(id));
+}
+
+// MPS, then ejection by 32 and injection by 40 percent (the paper reports -38 %
+// and +44 % on a surface; docs/surfaces.md has what is reached where), on the genus-2
+// surface and the open one, each result checked by the oracle.
+TEST(SurfaceTune, EjectionAndInjectionReachExactCounts) {
+  for (const Case& c : {kCases[1], kCases[2]}) {
+    const auto domain = surface_file(c.file);
+    Rng rng(11);
+    const SurfacePacking mps = sample_surface_mps(domain, SurfaceSizing::constant(c.r_over_diagonal * diagonal(*domain)), rng);
+    for (const double factor : {0.68, 1.4}) {
+      SCOPED_TRACE(std::string(c.file) + " x" + std::to_string(factor));
+      SurfacePacking packing = mps;
+      const std::size_t goal = static_cast<std::size_t>(std::lround(factor * mps.size()));
+      const TuneResult result = tune(packing, Target::count(goal), rng);
+      EXPECT_TRUE(result.reached) << result.count << " of " << goal << ", last phase " << to_string(result.last_phase);
+      EXPECT_EQ(packing.size(), result.count);
+      EXPECT_SURFACE_OK(packing);
+    }
+  }
+}
+
+// Every single operation leaves the packing conflict-free and maximal.
+TEST(SurfaceTune, EachOperationKeepsTheInvariants) {
+  const auto domain = surface_file("eight.off");
+  using Op = std::size_t (*)(SurfacePacking&, DiskId, Rng&, std::size_t);
+  const std::pair<const char*, Op> ops[] = {{"void", &void_inject},
+                                            {"repeller", &repeller_inject},
+                                            {"sift", &sift_eject},
+                                            {"attractor", &attractor_eject}};
+  for (const auto& [name, op] : ops) {
+    Rng rng(3);
+    SurfacePacking packing = sample_surface_mps(domain, SurfaceSizing::constant(0.06 * diagonal(*domain)), rng);
+    std::size_t changed = 0;
+    for (int k = 0; k < 25; ++k) {
+      const auto ids = packing.ids();
+      const std::size_t before = packing.size();
+      op(packing, ids[uniform_index(rng, ids.size())], rng, 3);
+      changed += packing.size() != before;
+      const auto report = surface_report(packing, 2);
+      ASSERT_TRUE(report.ok()) << name << " step " << k << ": " << report.summary();
+    }
+    EXPECT_GT(changed, 0u) << name << " never changed the count";
+  }
+}
+
+TEST(SurfaceTune, VaryingRadiiStayValid) {
+  const auto domain = surface_file("eight.off");
+  // A linear field along z: radii from 0.025 to 0.05 of the diagonal.
+  std::vector<double> radii;
+  const double d = diagonal(*domain), z0 = domain->bbox_min().z, dz = domain->bbox_max().z - z0;
+  for (const Vec3 v : domain->vertices()) radii.push_back(d * (0.025 + 0.025 * (v.z - z0) / dz));
+  Rng rng(2);
+  const SurfacePacking mps = sample_surface_mps(domain, SurfaceSizing::per_vertex(*domain, radii), rng);
+  EXPECT_SURFACE_OK(mps);
+  for (const double factor : {0.7, 1.3}) {
+    SurfacePacking packing = mps;
+    const auto goal = static_cast<std::size_t>(std::lround(factor * mps.size()));
+    const TuneResult result = tune(packing, Target::count(goal), rng);
+    EXPECT_TRUE(result.reached) << result.count << " of " << goal;
+    EXPECT_SURFACE_OK(packing);
+  }
+}
+
+TEST(SurfaceTune, RefusesAngleInjectionAndCrystalsWithASizing) {
+  const auto domain = surface_file("sphere.off");
+  Rng rng(1);
+  SurfacePacking packing = sample_surface_mps(domain, SurfaceSizing::constant(0.1), rng);
+  TuneOptions options;
+  options.method = Method::angle_injection;
+  EXPECT_NE(test::message_of([&] { tune(packing, Target::count(packing.size() + 5), rng, options); }).find("angle"),
+            std::string::npos);
+  SurfacePacking sized = sample_surface_mps(
+      domain, SurfaceSizing::per_vertex(*domain, std::vector<double>(domain->vertices().size(), 0.1)), rng);
+  EXPECT_NE(test::message_of([&] { crystal_eject(sized, rng, 5); }).find("one radius"), std::string::npos);
+}
+
+// Crystal growth alone, both ways, keeps the invariants after every kept step.
+TEST(SurfaceTune, CrystalStepsKeepTheInvariants) {
+  const auto domain = surface_file("sphere.off");
+  for (const bool inject : {true, false}) {
+    Rng rng(4);
+    SurfacePacking packing = sample_surface_mps(domain, SurfaceSizing::constant(0.08), rng);
+    const std::size_t start = packing.size();
+    int steps = 0;
+    auto check = [&] {
+      if (++steps % 10 != 0) return;
+      const auto report = surface_report(packing, 2);
+      ASSERT_TRUE(report.ok()) << (inject ? "inject" : "eject") << " step " << steps << ": " << report.summary();
+    };
+    const std::size_t changed = inject ? crystal_inject(packing, rng, 40, check) : crystal_eject(packing, rng, 40, check);
+    EXPECT_GT(changed, 0u);
+    EXPECT_EQ(packing.size(), inject ? start + changed : start - changed);
+    EXPECT_SURFACE_OK(packing);
+  }
+}
+
+}  // namespace
+}  // namespace disktune
