@@ -22,43 +22,35 @@ bool ignored(const std::vector<DiskId>& ignore, DiskId id) {
   return std::find(ignore.begin(), ignore.end(), id) != ignore.end();
 }
 
-// True when q lies in a closed disk other than a, b and the ignored ones.
-bool covered_by_others(const SurfacePacking& packing, Vec3 q, DiskId a, DiskId b, const std::vector<DiskId>& ignore) {
-  bool hit = false;
-  packing.for_each_near(q, packing.max_radius() * (1 + kRelTol), [&](DiskId j) {
-    if (hit || j == a || j == b || ignored(ignore, j)) return;
-    if (is_covered(squared_norm(packing.center(j) - q), packing.radius(j))) hit = true;
+// The disks, but the ignored ones, that can define or cover a void point within R of q:
+// those centered within R + r_max. One grid query serves every triangle of a region.
+void disks_near(const SurfacePacking& packing, Vec3 q, double R, const std::vector<DiskId>& ignore,
+                std::vector<DiskId>& out) {
+  out.clear();
+  packing.for_each_near(q, R + packing.max_radius() * (1 + kRelTol), [&](DiskId j) {
+    if (!ignored(ignore, j)) out.push_back(j);
   });
-  return hit;
 }
 
-// The void points of triangle t; with R finite, only those within R of q, from the
-// disks that can reach that far.
-void collect(const SurfacePacking& packing, std::size_t t, Vec3 q, double R, const std::vector<DiskId>& ignore,
+// The void points of triangle t within R of q (R infinite: all of them); `near` holds
+// disks_near(q, R) (for the whole triangle: around a point of it, reaching all of it).
+void collect(const SurfacePacking& packing, std::size_t t, Vec3 q, double R, const std::vector<DiskId>& near,
              std::vector<SurfaceVoidPoint>& out) {
   const SurfaceIndex& index = packing.index();
-  const TrianglePlane& plane = index.plane(t);
-  const auto& tri = packing.domain().triangles()[t];
-  const auto& v = packing.domain().vertices();
-  const Vec3 centroid = (v[tri[0]] + v[tri[1]] + v[tri[2]]) * (1.0 / 3);
-  double reach = 0;
-  for (int k = 0; k < 3; ++k) reach = std::max(reach, norm(v[tri[k]] - centroid));
-  Vec3 around = centroid;
-  if (std::isfinite(R) && R < reach) around = q, reach = R;  // a small region: search around q
-  const double r_max = packing.max_radius();
   thread_local std::vector<Ball> balls;
   balls.clear();
-  packing.for_each_near(around, reach + r_max * (1 + kRelTol), [&](DiskId j) {
-    if (ignored(ignore, j)) return;
+  for (const DiskId j : near) {
     const Vec3 c = packing.center(j);
     const double r = packing.radius(j);
     if (squared_norm(index.closest_point(t, c) - c) <= r * r * (1 + 4 * kRelTol)) balls.push_back({c, r, j});
-  });
+  }
   const double R2 = std::isfinite(R) ? R * R : std::numeric_limits<double>::infinity();
-  const double tol = kRelTol * r_max;
-  for_each_arrangement_vertex(plane, balls, tol, [&](Vec3 p, DiskId a, DiskId b) {
+  for_each_arrangement_vertex(index.plane(t), balls, kRelTol * packing.max_radius(), [&](Vec3 p, DiskId a, DiskId b) {
     if (squared_norm(p - q) > R2) return;
-    if (!covered_by_others(packing, p, a, b, ignore)) out.push_back({{p, static_cast<std::uint32_t>(t)}, a, b});
+    for (const DiskId j : near) {  // covered by a disk other than a and b?
+      if (j != a && j != b && is_covered(squared_norm(packing.center(j) - p), packing.radius(j))) return;
+    }
+    out.push_back({{p, static_cast<std::uint32_t>(t)}, a, b});
   });
 }
 
@@ -66,15 +58,26 @@ void collect(const SurfacePacking& packing, std::size_t t, Vec3 q, double R, con
 
 void void_points_in_triangle(const SurfacePacking& packing, std::size_t t, const std::vector<DiskId>& ignore,
                              std::vector<SurfaceVoidPoint>& out) {
-  collect(packing, t, {}, std::numeric_limits<double>::infinity(), ignore, out);
+  const auto& tri = packing.domain().triangles()[t];
+  const auto& v = packing.domain().vertices();
+  const Vec3 centroid = (v[tri[0]] + v[tri[1]] + v[tri[2]]) * (1.0 / 3);
+  double reach = 0;
+  for (int k = 0; k < 3; ++k) reach = std::max(reach, norm(v[tri[k]] - centroid));
+  thread_local std::vector<DiskId> near;
+  disks_near(packing, centroid, reach, ignore, near);
+  collect(packing, t, centroid, std::numeric_limits<double>::infinity(), near, out);
 }
 
 void void_points_near(const SurfacePacking& packing, Vec3 q, double R, const std::vector<DiskId>& ignore,
                       std::vector<SurfaceVoidPoint>& out) {
   thread_local std::vector<std::uint32_t> tris;
+  thread_local std::vector<DiskId> near;
   packing.index().triangles_near(q, R, tris);
-  const std::vector<std::uint32_t> mine = tris;  // collect may query triangles_near again
-  for (const std::uint32_t t : mine) collect(packing, t, q, R, ignore, out);
+  disks_near(packing, q, R, ignore, near);
+  for (const std::uint32_t t : tris) {
+    if (squared_norm(packing.index().closest_point(t, q) - q) > R * R) continue;  // out of the region
+    collect(packing, t, q, R, near, out);
+  }
 }
 
 bool is_maximal(const SurfacePacking& packing) {
