@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "disktune/restricted_delaunay.h"
 #include "disktune/surface_tuning.h"
 #include "disktune/surface_voids.h"
 #include "surface_checks.h"
@@ -155,6 +156,28 @@ TEST(SurfaceTune, CrystalStepsKeepTheInvariants) {
     EXPECT_GT(changed, 0u);
     EXPECT_EQ(packing.size(), inject ? start + changed : start - changed);
     EXPECT_SURFACE_OK(packing);
+  }
+}
+
+// The resampled surface: the restricted Delaunay mesh of a tuned packing is a manifold
+// with the input's genus, close to it.
+TEST(SurfaceTune, TunedPackingsMeshTheSurface) {
+  const auto domain = surface_file("eight.off");
+  const double r = 0.03 * diagonal(*domain);
+  Rng rng(9);
+  const SurfacePacking mps = sample_surface_mps(domain, SurfaceSizing::constant(r), rng);
+  for (const double factor : {0.7, 1.0, 1.4}) {
+    SCOPED_TRACE("x" + std::to_string(factor));
+    SurfacePacking packing = mps;
+    if (factor != 1.0) tune(packing, Target::count(static_cast<std::size_t>(std::lround(factor * mps.size()))), rng);
+    std::vector<Vec3> samples;
+    for (const DiskId id : packing.ids()) samples.push_back(packing.center(id));
+    const SurfaceMesh mesh = restricted_delaunay(samples, *domain);
+    const SurfaceMeshCheck check = check_surface_mesh(mesh);
+    EXPECT_TRUE(check.manifold) << check.problems;
+    EXPECT_EQ(check.genus, domain->genus());
+    EXPECT_EQ(check.components, 1u);
+    EXPECT_LT(hausdorff_distance(mesh, *domain, 20000, 1), 0.5 * r);
   }
 }
 
