@@ -39,7 +39,12 @@ class SpaceGrid {
   std::uint64_t key(Vec3 p) const;
   /// f(id) for every item in a cell meeting the box [q - R, q + R].
   template <class F>
-  void for_each_in_box(Vec3 q, double R, F&& f) const;
+  void for_each_in_box(Vec3 q, double R, F&& f) const {
+    any_in_box(q, R, [&](std::uint32_t id) { return f(id), false; });
+  }
+  /// True, stopping at once, when pred(id) holds for an item in a cell meeting the box.
+  template <class Pred>
+  bool any_in_box(Vec3 q, double R, Pred&& pred) const;
 
  private:
   double cell_;
@@ -105,6 +110,12 @@ class SurfacePacking {
   /// f(id) for every live disk whose center is within R of q.
   template <class F>
   void for_each_near(Vec3 q, double R, F&& f) const;
+  /// True, stopping at once, when pred(id) holds for a live disk centered within R of q.
+  template <class Pred>
+  bool any_near(Vec3 q, double R, Pred&& pred) const {
+    const double R2 = R * R;
+    return grid_.any_in_box(q, R, [&](std::uint32_t id) { return squared_norm(point_[id].p - q) <= R2 && pred(DiskId{id}); });
+  }
   /// True when q lies strictly inside a disk other than `ignore1` and `ignore2` (beyond
   /// the tolerance): a center there would be a conflict.
   bool conflicts(Vec3 q, DiskId ignore1 = kNoDisk, DiskId ignore2 = kNoDisk) const;
@@ -124,8 +135,8 @@ class SurfacePacking {
 
 // ---- templates ----
 
-template <class F>
-void SpaceGrid::for_each_in_box(Vec3 q, double R, F&& f) const {
+template <class Pred>
+bool SpaceGrid::any_in_box(Vec3 q, double R, Pred&& pred) const {
   const std::int64_t i0 = coord(q.x - R), i1 = coord(q.x + R);
   const std::int64_t j0 = coord(q.y - R), j1 = coord(q.y + R);
   const std::int64_t k0 = coord(q.z - R), k1 = coord(q.z + R);
@@ -134,8 +145,10 @@ void SpaceGrid::for_each_in_box(Vec3 q, double R, F&& f) const {
       for (std::int64_t k = k0; k <= k1; ++k) {
         const auto it = cells_.find(pack(i, j, k));
         if (it == cells_.end()) continue;
-        for (const std::uint32_t id : it->second) f(id);
+        for (const std::uint32_t id : it->second)
+          if (pred(id)) return true;
       }
+  return false;
 }
 
 template <class F>

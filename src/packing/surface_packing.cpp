@@ -192,19 +192,15 @@ std::vector<DiskId> SurfacePacking::ids() const {
 }
 
 bool SurfacePacking::conflicts(Vec3 q, DiskId ignore1, DiskId ignore2) const {
-  bool hit = false;
-  for_each_near(q, max_radius(), [&](DiskId j) {
-    if (!hit && j != ignore1 && j != ignore2 && is_conflict(squared_norm(point_[j].p - q), radius_[j])) hit = true;
+  return any_near(q, max_radius(), [&](DiskId j) {
+    return j != ignore1 && j != ignore2 && is_conflict(squared_norm(point_[j].p - q), radius_[j]);
   });
-  return hit;
 }
 
 bool SurfacePacking::covered(Vec3 q, DiskId ignore1, DiskId ignore2) const {
-  bool hit = false;
-  for_each_near(q, max_radius() * (1 + kRelTol), [&](DiskId j) {
-    if (!hit && j != ignore1 && j != ignore2 && is_covered(squared_norm(point_[j].p - q), radius_[j])) hit = true;
+  return any_near(q, max_radius() * (1 + kRelTol), [&](DiskId j) {
+    return j != ignore1 && j != ignore2 && is_covered(squared_norm(point_[j].p - q), radius_[j]);
   });
-  return hit;
 }
 
 }  // namespace disktune

@@ -59,13 +59,21 @@ void collect(const SurfacePacking& packing, std::size_t t, Vec3 q, double R, con
 void void_points_in_triangle(const SurfacePacking& packing, std::size_t t, const std::vector<DiskId>& ignore,
                              std::vector<SurfaceVoidPoint>& out) {
   const auto& tri = packing.domain().triangles()[t];
-  const auto& v = packing.domain().vertices();
-  const Vec3 centroid = (v[tri[0]] + v[tri[1]] + v[tri[2]]) * (1.0 / 3);
-  double reach = 0;
-  for (int k = 0; k < 3; ++k) reach = std::max(reach, norm(v[tri[k]] - centroid));
+  const Vec3 a = packing.domain().vertices()[tri[0]], b = packing.domain().vertices()[tri[1]],
+             c = packing.domain().vertices()[tri[2]];
+  // Regions of about one radius (a barycentric grid whose points are within R of every
+  // point of the triangle), so a large triangle costs linear, not quadratic, time in
+  // the disks on it.
+  const double longest = std::sqrt(std::max({squared_norm(b - a), squared_norm(c - b), squared_norm(a - c)}));
+  const int n = std::max(1, static_cast<int>(std::ceil(longest / packing.max_radius())));
+  const double R = longest / n * (1 + 1e-9);
   thread_local std::vector<DiskId> near;
-  disks_near(packing, centroid, reach, ignore, near);
-  collect(packing, t, centroid, std::numeric_limits<double>::infinity(), near, out);
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; i + j <= n; ++j) {
+      const Vec3 q = a + (b - a) * (double(i) / n) + (c - a) * (double(j) / n);
+      disks_near(packing, q, R, ignore, near);
+      collect(packing, t, q, R, near, out);
+    }
 }
 
 void void_points_near(const SurfacePacking& packing, Vec3 q, double R, const std::vector<DiskId>& ignore,
