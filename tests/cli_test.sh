@@ -207,6 +207,9 @@ expect surface-mesh-ply 0 "-> e4.ply" -- "$bin" mesh e4.csv --domain "$eight" --
 expect surface-from-ply 0 "surface e4\.ply \(420 vertices, [0-9]+ triangles, genus 2, closed" -- "$bin" sample --domain e4.ply --radius 0.05
 expect surface-curvature 0 "^sample: [0-9]+ disks, .*sizing curvature .*genus 0, closed" -- "$bin" sample --domain "$data/surfaces/sphere.off" --sizing curvature --output sc.csv
 expect surface-curvature-report 0 "maximal, conflict-free" -- "$bin" report sc.csv --domain "$data/surfaces/sphere.off" --sizing curvature
+# varying radii: centers inside larger disks are no conflict, so a sample reads back
+expect surface-curvature-eight 0 "^sample: " -- "$bin" sample --domain "$eight" --sizing curvature:0.02,0.06 --output ec.csv
+expect surface-curvature-tune 0 "reached" -- "$bin" tune --domain "$eight" --sizing curvature:0.02,0.06 --input ec.csv --target-fraction 0.6
 expect surface-boundary 0 "[0-9]+ disks \([0-9]+ on the boundary\), .*1 boundary loop" -- "$bin" sample --domain "$data/surfaces/mesh_with_border.off" --radius 4 --output mb.csv
 expect surface-boundary-read 0 "[0-9]+ disks \([1-9][0-9]* on the boundary\), .*maximal, conflict-free" -- "$bin" report mb.csv --domain "$data/surfaces/mesh_with_border.off" --radius 4
 expect flat-off-is-planar 0 "planar domain .*square_with_hole\.off" -- "$bin" sample --domain "$data/domains/square_with_hole.off" --radius 0.05

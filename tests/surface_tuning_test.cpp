@@ -126,6 +126,29 @@ TEST(SurfaceTune, VaryingRadiiStayValid) {
   }
 }
 
+// A center inside a larger disk is allowed (it came first); two disks covering each
+// other's centers are not.
+TEST(SurfaceValidation, FollowsThePriorDiskRule) {
+  const auto domain = surface_file("eight.off");
+  std::vector<double> radii;
+  const double d = diagonal(*domain), z0 = domain->bbox_min().z, dz = domain->bbox_max().z - z0;
+  for (const Vec3 v : domain->vertices()) radii.push_back(d * (0.02 + 0.04 * (v.z - z0) / dz));
+  Rng rng(6);
+  SurfacePacking packing = sample_surface_mps(domain, SurfaceSizing::per_vertex(*domain, radii), rng);
+  std::size_t covered_centers = 0;
+  for (const DiskId i : packing.ids())
+    for (const DiskId j : packing.ids())
+      if (i != j && squared_norm(packing.center(i) - packing.center(j)) < packing.radius(j) * packing.radius(j)) ++covered_centers;
+  EXPECT_GT(covered_centers, 0u) << "the case needs centers inside larger disks";
+  EXPECT_TRUE(is_conflict_free(packing));
+  EXPECT_NO_THROW(validate_surface_packing(packing, "mps"));
+  const DiskId a = packing.ids().front();
+  packing.insert(packing.point(a));  // a second disk on the same center
+  EXPECT_FALSE(is_conflict_free(packing));
+  EXPECT_NE(test::message_of([&] { validate_surface_packing(packing, "twice"); }).find("cover each other's centers"),
+            std::string::npos);
+}
+
 TEST(SurfaceTune, RefusesAngleInjectionAndCrystalsWithASizing) {
   const auto domain = surface_file("sphere.off");
   Rng rng(1);

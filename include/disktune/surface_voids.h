@@ -40,6 +40,10 @@ struct BoundaryGap {
 };
 std::vector<BoundaryGap> uncovered_boundary(const SurfacePacking& packing, bool fixed_only);
 
+/// True when no two disks cover each other's centers (the prior-disk rule, pairwise: a
+/// center may lie in a larger disk, which came later).
+bool is_conflict_free(const SurfacePacking& packing);
+
 /// Throws InvalidInput unless the packing is non-empty, conflict-free and maximal,
 /// naming a conflicting pair or an uncovered point; `what` names the input.
 void validate_surface_packing(const SurfacePacking& packing, const std::string& what);

@@ -4,8 +4,9 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
-#include <functional>
+#include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <string>
 
 #include "disktune/tuning.h"
@@ -51,6 +52,17 @@ struct TuneJob {
   std::uint64_t seed = 1;
 };
 int run_tune(const TuneJob& job);
+
+/// What `tune` does alike on the plane and on a surface (tune_command.cpp). Runs
+/// `run(options)` with `method` and a progress bar from `start` disks towards `target`.
+TuneResult tune_with_progress(std::size_t start, std::size_t target, Method method,
+                              const std::function<TuneResult(const TuneOptions&)>& run);
+/// Prints the result line, "tune: START -> COUNT disks (target ...), DENSITY, phase ...,
+/// SECONDS s" then `where` (e.g. " (r = 0.1, the surface ...)") and " -> OUTPUT" when
+/// one was written; when the target was not reached, also why, on stderr. `density` is
+/// the density text of the count reached. Returns the exit code.
+int report_tune(std::size_t start, const TuneResult& res, const std::string& density,
+                double seconds, const std::string& where, const std::string& output);
 
 /// The commands on a curved surface (surface_commands.cpp): each command runs these
 /// instead when its --domain names a surface (names_surface in command_domain.h).

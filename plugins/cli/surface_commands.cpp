@@ -24,7 +24,6 @@
 #include "disktune/surface_mesh.h"
 #include "disktune/surface_tuning.h"
 #include "disktune/surface_voids.h"
-#include "progress_bar.h"
 
 namespace disktune::cli {
 namespace {
@@ -152,33 +151,14 @@ int run_surface_tune(const TuneJob& job) {
       job.input.empty() ? domain.sample_surface(rng) : domain.read_surface(job.input, true);
   const std::size_t start = packing.size();
 
-  ProgressBar bar;
-  TuneOptions options;
-  options.method = job.method;
-  options.on_progress = [&](const Progress& p) {
-    char status[96];
-    std::snprintf(status, sizeof status, "%zu/%zu disks, eta %.4f, %s", p.count, target,
-                  p.area_fraction, to_string(p.phase).c_str());
-    bar.update(static_cast<double>(p.count) - start, static_cast<double>(target) - start, status);
-  };
-  const TuneResult res = tune(packing, job.target, rng, options);
-  bar.clear();
+  const TuneResult res = tune_with_progress(start, target, job.method, [&](const TuneOptions& options) {
+    return tune(packing, job.target, rng, options);
+  });
   const double seconds = seconds_since(t0);
 
   if (!job.output.empty()) write_surface_csv(job.output, packing);
-  std::printf("tune: %zu -> %zu disks (target %zu%s), %s, phase %s, %.3f s (%s, %s)%s%s\n", start,
-              res.count, res.target, res.reached ? ", reached" : ", NOT reached",
-              domain.density_text(res.count).c_str(), to_string(res.last_phase).c_str(), seconds,
-              domain.radius_text().c_str(), domain.describe().c_str(),
-              job.output.empty() ? "" : " -> ", job.output.c_str());
-  if (!res.reached) {
-    std::fprintf(stderr,
-                 "disktune: the target was not reached: no phase makes progress beyond %zu disks "
-                 "(%s); the closest packing was written\n",
-                 res.count, domain.density_text(res.count).c_str());
-    return kExitNotReached;
-  }
-  return kExitOk;
+  return report_tune(start, res, domain.density_text(res.count), seconds,
+                     " (" + domain.radius_text() + ", " + domain.describe() + ")", job.output);
 }
 
 int run_surface_mesh(const std::string& input, const DomainArgs& domain_args,
@@ -228,13 +208,7 @@ int run_surface_report(const SurfaceReportJob& job) {
   const SurfacePacking packing = domain.read_surface(job.input, false);
   const SurfaceDomain& surface = *domain.surface;
 
-  bool conflict_free = true;
-  for (const DiskId id : packing.ids()) {
-    if (packing.conflicts(packing.center(id), id)) {
-      conflict_free = false;
-      break;
-    }
-  }
+  const bool conflict_free = is_conflict_free(packing);
   const bool maximal = is_maximal(packing);
   const SampleMesh m = sample_mesh(packing);
   SurfaceMeshQuality q = measure_surface_mesh(m.mesh, m.radius);

@@ -51,30 +51,43 @@ int run_tune(const TuneJob& job) {
   Packing packing = job.input.empty() ? domain.sample(rng) : domain.read(job.input, true);
   const std::size_t start = packing.size();
 
+  const TuneResult res = tune_with_progress(start, target, job.method, [&](const TuneOptions& options) {
+    return domain.tune(packing, job.target, rng, options);
+  });
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+
+  if (!job.output.empty()) write_points_csv(job.output, packing);
+  if (!job.svg.empty()) write_packing_svg(job.svg, packing);
+  return report_tune(start, res, domain.density_text(res.count), seconds, "", job.output);
+}
+
+TuneResult tune_with_progress(std::size_t start, std::size_t target, Method method,
+                              const std::function<TuneResult(const TuneOptions&)>& run) {
   ProgressBar bar;
   TuneOptions options;
-  options.method = job.method;
+  options.method = method;
   options.on_progress = [&](const Progress& p) {
     char status[96];
     std::snprintf(status, sizeof status, "%zu/%zu disks, eta %.4f, %s", p.count, target,
                   p.area_fraction, to_string(p.phase).c_str());
     bar.update(static_cast<double>(p.count) - start, static_cast<double>(target) - start, status);
   };
-  const TuneResult res = domain.tune(packing, job.target, rng, options);
+  const TuneResult res = run(options);
   bar.clear();
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return res;
+}
 
-  if (!job.output.empty()) write_points_csv(job.output, packing);
-  if (!job.svg.empty()) write_packing_svg(job.svg, packing);
-  std::printf("tune: %zu -> %zu disks (target %zu%s), %s, phase %s, %.3f s%s%s\n", start,
-              res.count, res.target, res.reached ? ", reached" : ", NOT reached",
-              domain.density_text(res.count).c_str(), to_string(res.last_phase).c_str(), seconds,
-              job.output.empty() ? "" : " -> ", job.output.c_str());
+int report_tune(std::size_t start, const TuneResult& res, const std::string& density,
+                double seconds, const std::string& where, const std::string& output) {
+  std::printf("tune: %zu -> %zu disks (target %zu%s), %s, phase %s, %.3f s%s%s%s\n", start,
+              res.count, res.target, res.reached ? ", reached" : ", NOT reached", density.c_str(),
+              to_string(res.last_phase).c_str(), seconds, where.c_str(),
+              output.empty() ? "" : " -> ", output.c_str());
   if (!res.reached) {
     std::fprintf(stderr,
                  "disktune: the target was not reached: no phase makes progress beyond %zu disks "
                  "(%s); the closest packing was written\n",
-                 res.count, domain.density_text(res.count).c_str());
+                 res.count, density.c_str());
     return kExitNotReached;
   }
   return kExitOk;

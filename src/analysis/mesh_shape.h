@@ -46,4 +46,18 @@ MeshShape measure_mesh_shape(std::size_t vertex_count,
                              const std::function<double(std::uint32_t, std::uint32_t)>& edge_length,
                              const std::vector<double>& vertex_radius);
 
+/// The public measures of a mesh (PlanarMeshQuality or SurfaceMeshQuality) from its
+/// counts and shape.
+template <class MeshQuality>
+MeshQuality mesh_quality(std::size_t vertex_count, std::size_t triangle_count, const MeshShape& m) {
+  MeshQuality q;
+  q.vertex_count = vertex_count;
+  q.triangle_count = triangle_count;
+  q.interior_vertex_count = m.interior_vertex_count;
+  q.angles = m.angles;
+  q.edges = m.edges;
+  q.local_beta = m.local_beta;
+  return q;
+}
+
 }  // namespace disktune::detail

@@ -221,17 +221,10 @@ PlanarMeshQuality measure_planar_mesh(const PlanarMesh& mesh, const std::vector<
   const auto length = [&](std::uint32_t a, std::uint32_t b) {
     return distance(mesh.vertices[a], mesh.vertices[b]);
   };
-  const detail::MeshShape m =
+  return detail::mesh_quality<PlanarMeshQuality>(
+      mesh.vertices.size(), mesh.triangles.size(),
       detail::measure_mesh_shape(mesh.vertices.size(), mesh.triangles,
-                                 planar_shapes(mesh.vertices, mesh.triangles), length, vertex_radius);
-  PlanarMeshQuality q;
-  q.vertex_count = mesh.vertices.size();
-  q.triangle_count = mesh.triangles.size();
-  q.interior_vertex_count = m.interior_vertex_count;
-  q.angles = m.angles;
-  q.edges = m.edges;
-  q.local_beta = m.local_beta;
-  return q;
+                                 planar_shapes(mesh.vertices, mesh.triangles), length, vertex_radius));
 }
 
 QualityReport measure_quality(const Packing& packing, const TriangleMesh& mesh, double r) {

@@ -39,16 +39,9 @@ SurfaceMeshQuality measure_surface_mesh(const SurfaceMesh& mesh, const std::vect
   const auto length = [&](std::uint32_t a, std::uint32_t b) {
     return norm(mesh.vertices[a] - mesh.vertices[b]);
   };
-  const detail::MeshShape m =
-      detail::measure_mesh_shape(mesh.vertices.size(), mesh.triangles, shapes, length, vertex_radius);
-  SurfaceMeshQuality q;
-  q.vertex_count = mesh.vertices.size();
-  q.triangle_count = mesh.triangles.size();
-  q.interior_vertex_count = m.interior_vertex_count;
-  q.angles = m.angles;
-  q.edges = m.edges;
-  q.local_beta = m.local_beta;
-  return q;
+  return detail::mesh_quality<SurfaceMeshQuality>(
+      mesh.vertices.size(), mesh.triangles.size(),
+      detail::measure_mesh_shape(mesh.vertices.size(), mesh.triangles, shapes, length, vertex_radius));
 }
 
 }  // namespace disktune

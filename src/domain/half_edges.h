@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The edges of a triangle mesh, each side once (internal): what the planar domain
-// reader and the surface domain check manifoldness, orientation and boundaries with.
+// The edges of a triangle mesh, each side once, and the fans around a vertex (internal):
+// what the planar domain reader, the surface domain and the surface mesh check test
+// manifoldness, orientation and boundaries with.
 #pragma once
 
 #include <algorithm>
@@ -8,6 +9,8 @@
 #include <cstddef>
 #include <tuple>
 #include <vector>
+
+#include "union_find.h"
 
 namespace disktune::detail {
 
@@ -31,6 +34,44 @@ inline std::vector<HalfEdge> sorted_half_edges(const std::vector<std::array<std:
     return std::tie(p.lo, p.hi, p.tri) < std::tie(q.lo, q.hi, q.tri);
   });
   return out;
+}
+
+/// Calls f(first, last) for each run [first, last) of sorted half-edges on one edge.
+template <class F>
+void for_each_edge(const std::vector<HalfEdge>& half, F&& f) {
+  for (std::size_t i = 0; i < half.size();) {
+    std::size_t j = i + 1;
+    while (j < half.size() && half[j].lo == half[i].lo && half[j].hi == half[i].hi) ++j;
+    f(i, j);
+    i = j;
+  }
+}
+
+/// How many fans the triangles `around` vertex v form: v is a manifold vertex iff its
+/// link (the edges opposite v) is connected, one piece.
+inline std::size_t fan_count(std::size_t v, const std::vector<std::size_t>& around,
+                             const std::vector<std::array<std::size_t, 3>>& tris) {
+  std::vector<std::size_t> nb;
+  for (const std::size_t t : around) {
+    for (const std::size_t w : tris[t]) {
+      if (w != v) nb.push_back(w);
+    }
+  }
+  std::sort(nb.begin(), nb.end());
+  nb.erase(std::unique(nb.begin(), nb.end()), nb.end());
+  const auto local = [&](std::size_t w) {
+    return static_cast<std::size_t>(std::lower_bound(nb.begin(), nb.end(), w) - nb.begin());
+  };
+  UnionFind link(nb.size());
+  std::size_t pieces = nb.size();
+  for (const std::size_t t : around) {
+    std::size_t other[2], n = 0;
+    for (const std::size_t w : tris[t]) {
+      if (w != v) other[n++] = w;
+    }
+    if (link.unite(local(other[0]), local(other[1]))) --pieces;
+  }
+  return pieces;
 }
 
 }  // namespace disktune::detail

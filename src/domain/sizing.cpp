@@ -4,12 +4,9 @@
 #include "disktune/sizing.h"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <filesystem>
-#include <sstream>
 #include <string>
-#include <system_error>
 #include <vector>
 
 #include "../io/number_text.h"
@@ -18,24 +15,9 @@
 namespace disktune {
 namespace {
 
-std::string number_text(double v) {
-  std::ostringstream out;
-  detail::put_number(out, v);
-  return out.str();
-}
-
-// The whole of `text` as a finite number, or false.
-bool parse_number(const std::string& text, double& v) {
-  const char* end = text.data() + text.size();
-  const auto res = std::from_chars(text.data(), end, v);
-  return res.ec == std::errc() && res.ptr == end && std::isfinite(v);
-}
-
-std::string trimmed(const std::string& s) {
-  const auto first = s.find_first_not_of(" \t\r\n");
-  if (first == std::string::npos) return "";
-  return s.substr(first, s.find_last_not_of(" \t\r\n") - first + 1);
-}
+using detail::number_text;
+using detail::parse_number;
+using detail::trimmed;
 
 Sizing parse_boundary(const std::string& spec, const std::string& args,
                       std::shared_ptr<const PlanarDomain> domain) {

@@ -3,16 +3,14 @@
 #include "disktune/surface_domain.h"
 
 #include <algorithm>
-#include <cctype>
-#include <filesystem>
 #include <map>
 #include <numeric>
-#include <sstream>
 
-#include "../io/number_text.h"
+#include "../io/file_extension.h"
 #include "../io/polygon_soup.h"
 #include "disktune/errors.h"
 #include "half_edges.h"
+#include "point_text.h"
 
 namespace disktune {
 namespace {
@@ -20,15 +18,7 @@ namespace {
 using Triangle = SurfaceDomain::Triangle;
 
 std::string vertex_text(const std::vector<Vec3>& points, std::size_t v) {
-  std::ostringstream out;
-  out << "vertex " << v << " (";
-  detail::put_number(out, points[v].x);
-  out << ", ";
-  detail::put_number(out, points[v].y);
-  out << ", ";
-  detail::put_number(out, points[v].z);
-  out << ')';
-  return out.str();
+  return "vertex " + std::to_string(v) + " " + detail::point_text(points[v]);
 }
 
 std::string triangle_text(const std::vector<Vec3>& points, const Triangle& tri, std::size_t t) {
@@ -36,34 +26,10 @@ std::string triangle_text(const std::vector<Vec3>& points, const Triangle& tri, 
          vertex_text(points, tri[1]) + ", " + vertex_text(points, tri[2]) + ")";
 }
 
+using detail::for_each_edge;
 using detail::HalfEdge;
 using detail::sorted_half_edges;
-
-// Calls f(first, last) for each run of half-edges on one edge.
-template <class F>
-void for_each_edge(const std::vector<HalfEdge>& half, F&& f) {
-  for (std::size_t i = 0; i < half.size();) {
-    std::size_t j = i + 1;
-    while (j < half.size() && half[j].lo == half[i].lo && half[j].hi == half[i].hi) ++j;
-    f(i, j);
-    i = j;
-  }
-}
-
-struct UnionFind {
-  std::vector<std::size_t> parent;
-  explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
-  std::size_t find(std::size_t i) {
-    while (parent[i] != i) i = parent[i] = parent[parent[i]];
-    return i;
-  }
-  bool unite(std::size_t a, std::size_t b) {
-    a = find(a), b = find(b);
-    if (a == b) return false;
-    parent[a] = b;
-    return true;
-  }
-};
+using detail::UnionFind;
 
 void check_triangles(const std::vector<Vec3>& points, const std::vector<Triangle>& tris) {
   if (tris.empty()) throw InvalidInput("the surface has no triangles; give at least one");
@@ -116,33 +82,12 @@ void check_vertices(const std::vector<Vec3>& points, const std::vector<Triangle>
   for (std::size_t t = 0; t < tris.size(); ++t) {
     for (const std::size_t v : tris[t]) around[v].push_back(t);
   }
-  std::vector<std::size_t> nb;
   for (std::size_t v = 0; v < points.size(); ++v) {
     if (around[v].empty()) {
       throw InvalidInput(vertex_text(points, v) +
                          " lies in no triangle; remove unused vertices from the surface");
     }
-    // The triangles around v form one fan iff its link (the opposite edges) is connected.
-    nb.clear();
-    for (const std::size_t t : around[v]) {
-      for (const std::size_t w : tris[t]) {
-        if (w != v) nb.push_back(w);
-      }
-    }
-    std::sort(nb.begin(), nb.end());
-    nb.erase(std::unique(nb.begin(), nb.end()), nb.end());
-    const auto local = [&](std::size_t w) {
-      return static_cast<std::size_t>(std::lower_bound(nb.begin(), nb.end(), w) - nb.begin());
-    };
-    UnionFind link(nb.size());
-    std::size_t pieces = nb.size();
-    for (const std::size_t t : around[v]) {
-      std::size_t other[2], n = 0;
-      for (const std::size_t w : tris[t]) {
-        if (w != v) other[n++] = w;
-      }
-      if (link.unite(local(other[0]), local(other[1]))) --pieces;
-    }
+    const std::size_t pieces = detail::fan_count(v, around[v], tris);
     if (pieces > 1) {
       throw InvalidInput(vertex_text(points, v) + " joins " + std::to_string(pieces) +
                          " separate fans of triangles (a non-manifold, bow-tie vertex); give "
@@ -298,9 +243,7 @@ SurfaceDomain read_surface(const std::string& path) {
     }
     tris.push_back({poly[0], poly[1], poly[2]});
   }
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  const std::string ext = detail::lower_extension(path);
   if (ext == ".stl") merge_equal_points(points, tris);
   orient_consistently(tris);
   try {

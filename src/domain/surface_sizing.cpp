@@ -5,12 +5,10 @@
 #include "disktune/surface_sizing.h"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <functional>
 #include <queue>
 #include <string>
-#include <system_error>
 #include <utility>
 #include <vector>
 
@@ -22,20 +20,9 @@ namespace disktune {
 namespace {
 
 using detail::number_text;
+using detail::parse_number;
+using detail::trimmed;
 using detail::vertex_text;
-
-// The whole of `text` as a finite number, or false.
-bool parse_number(const std::string& text, double& v) {
-  const char* end = text.data() + text.size();
-  const auto res = std::from_chars(text.data(), end, v);
-  return res.ec == std::errc() && res.ptr == end && std::isfinite(v);
-}
-
-std::string trimmed(const std::string& s) {
-  const auto first = s.find_first_not_of(" \t\r\n");
-  if (first == std::string::npos) return "";
-  return s.substr(first, s.find_last_not_of(" \t\r\n") - first + 1);
-}
 
 bool is_radius(double r) { return std::isfinite(r) && r > 0; }
 

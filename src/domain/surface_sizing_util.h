@@ -1,37 +1,22 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // What the surface sizings share (internal): vertices in messages, the vertex graph of
-// the mesh's edges, and the number text of descriptions.
+// the mesh's edges, and (number_text.h) the number text of descriptions.
 #pragma once
 
 #include <algorithm>
 #include <cstddef>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "../io/number_text.h"
+#include "point_text.h"
 #include "disktune/surface_domain.h"
 
 namespace disktune::detail {
 
 /// "vertex 12 at (0.1, 0.2, 0.3)", every digit.
 inline std::string vertex_text(const SurfaceDomain& domain, std::size_t v) {
-  const Vec3 p = domain.vertices()[v];
-  std::ostringstream out;
-  out << "vertex " << v << " at (";
-  put_number(out, p.x);
-  out << ", ";
-  put_number(out, p.y);
-  out << ", ";
-  put_number(out, p.z);
-  out << ')';
-  return out.str();
-}
-
-inline std::string number_text(double v) {
-  std::ostringstream out;
-  put_number(out, v);
-  return out.str();
+  return "vertex " + std::to_string(v) + " at " + point_text(domain.vertices()[v]);
 }
 
 /// Each vertex's neighbours along the mesh's edges, sorted, each once.

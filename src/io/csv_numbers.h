@@ -1,11 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Internal: a CSV file of numbers (a header line naming the columns, then one row of
 // finite numbers per non-empty line), with errors that name the file and the line.
-// Shared by the planar (x,y,r) and surface (x,y,z,r) sample readers; implemented in
-// points_csv.cpp.
+// Shared by the planar (x,y,r) and surface (x,y,z,r) sample readers and writers;
+// implemented in points_csv.cpp.
 #pragma once
 
 #include <cstddef>
+#include <initializer_list>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -25,5 +27,9 @@ struct CsvNumbers {
 /// many finite numbers as that header names. Throws IoError when the file cannot be
 /// read and InvalidInput "PATH:LINE: ..." when its content is wrong.
 CsvNumbers read_csv_numbers(const std::string& path, const std::vector<std::string>& headers);
+
+/// Writes one row: the numbers comma-separated (each in the shortest form that reads
+/// back the same), then a line end.
+void put_csv_row(std::ostream& out, std::initializer_list<double> values);
 
 }  // namespace disktune::detail

@@ -1,14 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "disktune/mesh_io.h"
 
-#include <algorithm>
-#include <cctype>
-#include <filesystem>
 #include <string>
 #include <vector>
 
 #include "disktune/errors.h"
 #include "disktune/io.h"
+#include "file_extension.h"
 #include "number_text.h"
 
 namespace disktune {
@@ -77,9 +75,7 @@ void write_view(const std::string& path, const MeshView& mesh) {
 }  // namespace
 
 MeshFormat mesh_format_for_path(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  const std::string ext = detail::lower_extension(path);
   if (ext == ".off") return MeshFormat::Off;
   if (ext == ".obj") return MeshFormat::Obj;
   if (ext == ".vtk") return MeshFormat::Vtk;

@@ -13,14 +13,8 @@
 namespace disktune {
 namespace {
 
-using detail::put_number;
-
-std::string trim(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t\r");
-  if (b == std::string::npos) return "";
-  const auto e = s.find_last_not_of(" \t\r");
-  return s.substr(b, e - b + 1);
-}
+// CSV lines come from getline, without '\n': trimmed strips spaces, tabs and '\r'.
+using detail::trimmed;
 
 const char* count_word(std::size_t n) {
   static const char* const words[] = {"no", "one", "two", "three", "four", "five"};
@@ -49,14 +43,14 @@ CsvNumbers read_csv_numbers(const std::string& path, const std::vector<std::stri
   ++lineno;
   if (!std::getline(in, line)) fail("empty file; expected the header " + wanted);
   for (const std::string& h : headers) {
-    if (trim(line) == h) out.header = h;
+    if (trimmed(line) == h) out.header = h;
   }
-  if (out.header.empty()) fail("expected the header " + wanted + ", found '" + trim(line) + "'");
+  if (out.header.empty()) fail("expected the header " + wanted + ", found '" + trimmed(line) + "'");
   out.columns = static_cast<std::size_t>(std::count(out.header.begin(), out.header.end(), ',')) + 1;
   const std::string count = count_word(out.columns);
   while (std::getline(in, line)) {
     ++lineno;
-    const std::string t = trim(line);
+    const std::string t = trimmed(line);
     if (t.empty()) continue;
     const char* p = t.data();
     const char* end = t.data() + t.size();
@@ -79,6 +73,11 @@ CsvNumbers read_csv_numbers(const std::string& path, const std::vector<std::stri
   return out;
 }
 
+void put_csv_row(std::ostream& out, std::initializer_list<double> values) {
+  put_numbers(out, values, ",");
+  out << '\n';
+}
+
 }  // namespace detail
 
 void write_points_csv(const std::string& path, const Packing& packing) {
@@ -87,12 +86,7 @@ void write_points_csv(const std::string& path, const Packing& packing) {
     for (DiskId id = 0; id < packing.id_bound(); ++id) {
       if (!packing.alive(id)) continue;
       const Vec2 c = packing.center(id);
-      put_number(out, c.x);
-      out << ',';
-      put_number(out, c.y);
-      out << ',';
-      put_number(out, packing.radius(id));
-      out << '\n';
+      detail::put_csv_row(out, {c.x, c.y, packing.radius(id)});
     }
   });
 }

@@ -35,13 +35,19 @@ json to_json(const QualityReport::LocalBeta& b) {
   return {{"min", b.min}, {"mean", b.mean}, {"max", b.max}, {"histogram", to_json(b.histogram)}};
 }
 
-json to_json(const PlanarMeshQuality& m) {
-  return {{"vertex_count", m.vertex_count},
-          {"triangle_count", m.triangle_count},
-          {"interior_vertex_count", m.interior_vertex_count},
-          {"angles", to_json(m.angles)},
-          {"edges", to_json(m.edges)},
-          {"local_beta", to_json(m.local_beta)}};
+// A mesh's measures (PlanarMeshQuality, SurfaceMeshQuality); `hausdorff`, when given,
+// stands after the counts.
+template <class MeshQuality>
+json mesh_json(const MeshQuality& m, const double* hausdorff = nullptr) {
+  json j;
+  j["vertex_count"] = m.vertex_count;
+  j["triangle_count"] = m.triangle_count;
+  j["interior_vertex_count"] = m.interior_vertex_count;
+  if (hausdorff) j["hausdorff"] = *hausdorff;
+  j["angles"] = to_json(m.angles);
+  j["edges"] = to_json(m.edges);
+  j["local_beta"] = to_json(m.local_beta);
+  return j;
 }
 
 void write_text(const std::string& path, const std::string& text) {
@@ -98,9 +104,9 @@ std::string quality_json(const PlanarQualityReport& q) {
   j["min_distance_over_r"] = q.min_distance_over_r;
   j["maximal"] = q.maximal;
   j["conflict_free"] = q.conflict_free;
-  j["mesh"] = to_json(q.all);
-  j["interior_triangles"] = to_json(q.interior);
-  j["boundary_triangles"] = to_json(q.boundary);
+  j["mesh"] = mesh_json(q.all);
+  j["interior_triangles"] = mesh_json(q.interior);
+  j["boundary_triangles"] = mesh_json(q.boundary);
   return j.dump(2) + "\n";
 }
 
@@ -109,15 +115,7 @@ void write_quality_json(const std::string& path, const PlanarQualityReport& repo
 }
 
 std::string quality_json(const SurfaceMeshQuality& q) {
-  json j;
-  j["vertex_count"] = q.vertex_count;
-  j["triangle_count"] = q.triangle_count;
-  j["interior_vertex_count"] = q.interior_vertex_count;
-  j["hausdorff"] = q.hausdorff;
-  j["angles"] = to_json(q.angles);
-  j["edges"] = to_json(q.edges);
-  j["local_beta"] = to_json(q.local_beta);
-  return j.dump(2) + "\n";
+  return mesh_json(q, &q.hausdorff).dump(2) + "\n";
 }
 
 void write_quality_json(const std::string& path, const SurfaceMeshQuality& quality) {

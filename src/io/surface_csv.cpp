@@ -12,13 +12,10 @@
 #include "disktune/errors.h"
 #include "disktune/io.h"
 #include "disktune/surface_io.h"
-#include "number_text.h"
 #include "polygon_soup.h"
 
 namespace disktune {
 namespace {
-
-using detail::put_number;
 
 // Relative tolerances of a point read back: its distance to the surface, its radius
 // against the sizing's, and (tighter: they are placed there exactly) a boundary disk's
@@ -52,14 +49,7 @@ void write_surface_csv(const std::string& path, const SurfacePacking& packing) {
     out << "x,y,z,r\n";
     for (const DiskId id : packing.ids()) {
       const Vec3 c = packing.center(id);
-      put_number(out, c.x);
-      out << ',';
-      put_number(out, c.y);
-      out << ',';
-      put_number(out, c.z);
-      out << ',';
-      put_number(out, packing.radius(id));
-      out << '\n';
+      detail::put_csv_row(out, {c.x, c.y, c.z, packing.radius(id)});
     }
   });
 }

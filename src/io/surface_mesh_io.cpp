@@ -1,12 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // A surface mesh as ASCII OFF, OBJ or PLY, written atomically.
-#include <algorithm>
-#include <cctype>
-#include <filesystem>
+#include <string>
 
 #include "disktune/errors.h"
 #include "disktune/io.h"
 #include "disktune/surface_mesh.h"
+#include "file_extension.h"
 #include "number_text.h"
 
 namespace disktune {
@@ -15,9 +14,7 @@ namespace {
 enum class Format { Off, Obj, Ply };
 
 Format format_for(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  const std::string ext = detail::lower_extension(path);
   if (ext == ".off") return Format::Off;
   if (ext == ".obj") return Format::Obj;
   if (ext == ".ply") return Format::Ply;

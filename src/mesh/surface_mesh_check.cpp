@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The topology of a surface mesh, counted rather than thrown on (SurfaceDomain refuses
 // the first defect; a resampled mesh is reported on whole).
-#include <algorithm>
-#include <numeric>
+#include <string>
+#include <vector>
 
 #include "../domain/half_edges.h"
 #include "disktune/errors.h"
@@ -12,22 +12,8 @@ namespace disktune {
 namespace {
 
 using detail::HalfEdge;
+using detail::UnionFind;
 using Tri = std::array<std::size_t, 3>;
-
-struct UnionFind {
-  std::vector<std::size_t> parent;
-  explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
-  std::size_t find(std::size_t i) {
-    while (parent[i] != i) i = parent[i] = parent[parent[i]];
-    return i;
-  }
-  bool unite(std::size_t a, std::size_t b) {
-    a = find(a), b = find(b);
-    if (a == b) return false;
-    parent[a] = b;
-    return true;
-  }
-};
 
 std::vector<Tri> checked_triangles(const SurfaceMesh& mesh) {
   std::vector<Tri> tris;
@@ -48,33 +34,6 @@ std::vector<Tri> checked_triangles(const SurfaceMesh& mesh) {
     tris.push_back({tri[0], tri[1], tri[2]});
   }
   return tris;
-}
-
-// The triangles around v form one fan iff its link (the edges opposite v) is connected;
-// returns the number of pieces of the link.
-std::size_t fan_count(std::size_t v, const std::vector<std::size_t>& around,
-                      const std::vector<Tri>& tris) {
-  std::vector<std::size_t> nb;
-  for (const std::size_t t : around) {
-    for (const std::size_t w : tris[t]) {
-      if (w != v) nb.push_back(w);
-    }
-  }
-  std::sort(nb.begin(), nb.end());
-  nb.erase(std::unique(nb.begin(), nb.end()), nb.end());
-  const auto local = [&](std::size_t w) {
-    return static_cast<std::size_t>(std::lower_bound(nb.begin(), nb.end(), w) - nb.begin());
-  };
-  UnionFind link(nb.size());
-  std::size_t pieces = nb.size();
-  for (const std::size_t t : around) {
-    std::size_t other[2], n = 0;
-    for (const std::size_t w : tris[t]) {
-      if (w != v) other[n++] = w;
-    }
-    if (link.unite(local(other[0]), local(other[1]))) --pieces;
-  }
-  return pieces;
 }
 
 std::string problem_sentence(const SurfaceMeshCheck& c) {
@@ -109,9 +68,7 @@ SurfaceMeshCheck check_surface_mesh(const SurfaceMesh& mesh) {
   UnionFind boundary(nv);
   std::vector<char> on_boundary(nv, 0);
   std::vector<std::size_t> edge_lo;  // one end of each edge, to find its component
-  for (std::size_t i = 0; i < half.size();) {
-    std::size_t j = i + 1;
-    while (j < half.size() && half[j].lo == half[i].lo && half[j].hi == half[i].hi) ++j;
+  detail::for_each_edge(half, [&](std::size_t i, std::size_t j) {
     ++edge_count;
     edge_lo.push_back(half[i].lo);
     if (j - i == 1) {
@@ -123,8 +80,7 @@ SurfaceMeshCheck check_surface_mesh(const SurfaceMesh& mesh) {
     } else {
       ++c.non_manifold_edges;
     }
-    i = j;
-  }
+  });
 
   std::vector<std::vector<std::size_t>> around(nv);
   for (std::size_t t = 0; t < tris.size(); ++t) {
@@ -133,7 +89,7 @@ SurfaceMeshCheck check_surface_mesh(const SurfaceMesh& mesh) {
   for (std::size_t v = 0; v < nv; ++v) {
     if (around[v].empty()) {
       ++c.isolated_vertices;
-    } else if (fan_count(v, around[v], tris) > 1) {
+    } else if (detail::fan_count(v, around[v], tris) > 1) {
       ++c.non_manifold_vertices;
     }
   }

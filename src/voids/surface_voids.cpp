@@ -39,13 +39,24 @@ void collect(const SurfacePacking& packing, std::size_t t, Vec3 q, double R, con
   const SurfaceIndex& index = packing.index();
   thread_local std::vector<Ball> balls;
   balls.clear();
+  const TrianglePlane& plane = index.plane(t);
+  // Within the region, only circles passing within R of q make vertices there: in the
+  // plane, within R' = sqrt(R^2 - h^2) of q's projection, h its height.
+  const Vec2 q2 = plane.to_plane(q);
+  const double h = plane.height(q), reach2 = std::isfinite(R) ? R * R - h * h : 0;
+  const double reach = std::isfinite(R) ? std::sqrt(std::max(reach2, 0.0)) + kRelTol * R : 0;
   for (const DiskId j : near) {
     const Vec3 c = packing.center(j);
     const double r = packing.radius(j);
-    if (squared_norm(index.closest_point(t, c) - c) <= r * r * (1 + 4 * kRelTol)) balls.push_back({c, r, j});
+    if (squared_norm(index.closest_point(t, c) - c) > r * r * (1 + 4 * kRelTol)) continue;
+    if (std::isfinite(R)) {
+      const auto circle = plane.section(c, r);
+      if (!circle || std::abs(distance(circle->center, q2) - circle->radius) > reach) continue;
+    }
+    balls.push_back({c, r, j});
   }
   const double R2 = std::isfinite(R) ? R * R : std::numeric_limits<double>::infinity();
-  for_each_arrangement_vertex(index.plane(t), balls, kRelTol * packing.max_radius(), [&](Vec3 p, DiskId a, DiskId b) {
+  for_each_arrangement_vertex(plane, balls, kRelTol * packing.max_radius(), [&](Vec3 p, DiskId a, DiskId b) {
     if (squared_norm(p - q) > R2) return;
     for (const DiskId j : near) {  // covered by a disk other than a and b?
       if (j != a && j != b && is_covered(squared_norm(packing.center(j) - p), packing.radius(j))) return;
@@ -131,14 +142,39 @@ std::vector<BoundaryGap> uncovered_boundary(const SurfacePacking& packing, bool 
   return gaps;
 }
 
+namespace {
+
+// A disk that, with disk i, covers each other's centers, or kNoDisk. Pairwise the
+// prior-disk rule allows a center in a larger disk (varying radii), not in a smaller.
+DiskId conflicting_disk(const SurfacePacking& packing, DiskId i) {
+  const Vec3 c = packing.center(i);
+  DiskId found = kNoDisk;
+  packing.any_near(c, packing.radius(i), [&](DiskId j) {
+    if (j == i || !is_conflict(squared_norm(packing.center(j) - c), std::min(packing.radius(i), packing.radius(j))))
+      return false;
+    found = j;
+    return true;
+  });
+  return found;
+}
+
+}  // namespace
+
+bool is_conflict_free(const SurfacePacking& packing) {
+  for (const DiskId i : packing.ids())
+    if (conflicting_disk(packing, i) != kNoDisk) return false;
+  return true;
+}
+
 void validate_surface_packing(const SurfacePacking& packing, const std::string& what) {
   if (packing.empty()) throw InvalidInput(what + ": no disks");
   std::ostringstream msg;
   for (const DiskId i : packing.ids()) {
-    const Vec3 c = packing.center(i);
-    if (packing.conflicts(c, i)) {
-      msg << what << ": the disk centered at (" << c.x << ", " << c.y << ", " << c.z
-          << ") lies inside another disk (a conflict); sample the surface again";
+    if (const DiskId j = conflicting_disk(packing, i); j != kNoDisk) {
+      const Vec3 c = packing.center(i);
+      const Vec3 d = packing.center(j);
+      msg << what << ": the disks centered at (" << c.x << ", " << c.y << ", " << c.z << ") and (" << d.x << ", "
+          << d.y << ", " << d.z << ") cover each other's centers (a conflict); sample the surface again";
       throw InvalidInput(msg.str());
     }
   }
