@@ -7,7 +7,18 @@
 #include <cstddef>
 #include <functional>
 
+#include "disktune/errors.h"
+
 namespace disktune::detail {
+
+/// The lattice has one spacing: the paper has no crystal growth for varying radii.
+inline void require_one_radius(bool one_radius) {
+  if (!one_radius) {
+    throw InvalidInput("crystal growth needs one radius (a hexagonal lattice has one spacing); "
+                       "with a sizing function use void or repeller injection, sifting or "
+                       "attractor ejection");
+  }
+}
 
 /// Lattice provides: packing() (its size()), seed(log, room), has_sites(),
 /// take_site(), taken(site), settle(log, site, room) and, for ejection, tidy(log,

@@ -186,27 +186,18 @@ class Crystal {
   Attractors attractors_;
 };
 
-// The lattice has one spacing: the paper has no crystal growth for varying radii.
-void require_one_radius(const Packing& packing) {
-  if (packing.sizing()) {
-    throw InvalidInput("crystal growth needs one radius (a hexagonal lattice has one spacing); "
-                       "with a sizing function use void or repeller injection, sifting or "
-                       "attractor ejection");
-  }
-}
-
 }  // namespace
 
 std::size_t crystal_inject(Packing& packing, Rng& rng, std::size_t max_added,
                            const std::function<void()>& after_step) {
-  require_one_radius(packing);
+  detail::require_one_radius(packing.sizing() == nullptr);
   Crystal crystal(packing, rng, true);
   return detail::grow_crystal<detail::UndoLog>(crystal, true, max_added, after_step);
 }
 
 std::size_t crystal_eject(Packing& packing, Rng& rng, std::size_t max_removed,
                           const std::function<void()>& after_step) {
-  require_one_radius(packing);
+  detail::require_one_radius(packing.sizing() == nullptr);
   Crystal crystal(packing, rng, false);
   return detail::grow_crystal<detail::UndoLog>(crystal, false, max_removed, after_step);
 }

@@ -166,25 +166,18 @@ class SurfaceLattice {
   std::vector<SurfacePoint> sites_;
 };
 
-void require_one_radius(const SurfacePacking& packing) {
-  if (!packing.sizing().is_constant()) {
-    throw InvalidInput("crystal growth needs one radius (a hexagonal lattice has one spacing); "
-                       "with a sizing use void or repeller injection, sifting or attractor ejection");
-  }
-}
-
 }  // namespace
 
 std::size_t crystal_inject(SurfacePacking& packing, Rng& rng, std::size_t max_added,
                            const std::function<void()>& after_step) {
-  require_one_radius(packing);
+  detail::require_one_radius(packing.sizing().is_constant());
   SurfaceLattice lattice(packing, rng, true);
   return detail::grow_crystal<detail::SurfaceUndoLog>(lattice, true, max_added, after_step);
 }
 
 std::size_t crystal_eject(SurfacePacking& packing, Rng& rng, std::size_t max_removed,
                           const std::function<void()>& after_step) {
-  require_one_radius(packing);
+  detail::require_one_radius(packing.sizing().is_constant());
   SurfaceLattice lattice(packing, rng, false);
   return detail::grow_crystal<detail::SurfaceUndoLog>(lattice, false, max_removed, after_step);
 }

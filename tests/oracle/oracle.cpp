@@ -458,4 +458,19 @@ Report check_all(const Box& box, const std::vector<double>& radii, const Points&
   return run(box, centers, radii, tol, true, true, probes, seed, method);
 }
 
+void summary_list(std::ostringstream& s, const char* title, bool checked, std::size_t count, std::size_t kept,
+                  const std::function<void(std::size_t)>& item) {
+  s << title << ": ";
+  if (!checked) {
+    s << "not checked. ";
+    return;
+  }
+  s << count;
+  for (std::size_t k = 0; k < kept && k < 5; ++k) {
+    s << (k ? "; " : " (");
+    item(k);
+  }
+  s << (kept == 0 ? "" : count > 5 ? "; ...)" : ")") << ". ";
+}
+
 }  // namespace oracle

@@ -23,6 +23,8 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <functional>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -112,5 +114,10 @@ Report check_maximal(const Box& box, const std::vector<double>& radii, const Poi
 Report check_all(const Box& box, const std::vector<double>& radii, const Points& centers,
                  double tol = 1e-6, std::size_t probes = 100000, std::uint64_t seed = 1,
                  Method method = Method::automatic);
+
+// For the reports' summary(): appends "title: count (item 0; ...; item 4; ...). ", or
+// "title: not checked. ", item(k) writing the k-th kept witness to s.
+void summary_list(std::ostringstream& s, const char* title, bool checked, std::size_t count, std::size_t kept,
+                  const std::function<void(std::size_t)>& item);
 
 }  // namespace oracle

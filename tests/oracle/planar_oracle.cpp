@@ -513,17 +513,7 @@ std::string PlanarReport::summary() const {
   s << ", tol=" << tol << ". ";
   auto list = [&](const char* title, bool checked, std::size_t count, std::size_t kept,
                   const std::function<void(std::size_t)>& item) {
-    s << title << ": ";
-    if (!checked) {
-      s << "not checked. ";
-      return;
-    }
-    s << count;
-    for (std::size_t k = 0; k < kept && k < 5; ++k) {
-      s << (k ? "; " : " (");
-      item(k);
-    }
-    s << (kept == 0 ? "" : count > 5 ? "; ...)" : ")") << ". ";
+    summary_list(s, title, checked, count, kept, item);
   };
   list("Centers outside", containment_checked, outside_count, outside.size(), [&](std::size_t k) {
     s << "disk " << outside[k].i << " at (" << outside[k].x << ", " << outside[k].y

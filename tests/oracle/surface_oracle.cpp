@@ -748,17 +748,7 @@ std::string SurfaceReport::summary() const {
   s << ", tol=" << tol << ". ";
   auto list = [&](const char* title, bool checked, std::size_t count, std::size_t kept,
                   const std::function<void(std::size_t)>& item) {
-    s << title << ": ";
-    if (!checked) {
-      s << "not checked. ";
-      return;
-    }
-    s << count;
-    for (std::size_t k = 0; k < kept && k < 5; ++k) {
-      s << (k ? "; " : " (");
-      item(k);
-    }
-    s << (kept == 0 ? "" : count > 5 ? "; ...)" : ")") << ". ";
+    summary_list(s, title, checked, count, kept, item);
   };
   list("Centers off the surface", on_surface_checked, off_surface_count, off_surface.size(),
        [&](std::size_t k) {
