@@ -27,8 +27,10 @@ double density_unit(const SurfacePacking& packing);
 std::size_t target_count(const Target& target, const SurfacePacking& packing);
 
 /// Tunes the count to the target as tune() does in the plane, with the surface's
-/// operations and the same automatic schedule: injection is void, repeller, crystal
-/// injection, then repeller for the last few; ejection is sifting, attractor, crystal
+/// operations and nearly the same automatic schedule: injection is void injection, then
+/// crystal injection (no repeller phase before it: on a curved surface the crystal
+/// barely grows in the packing that phase leaves, measured), then repeller injection for
+/// the last few; ejection is sifting, attractor, crystal
 /// ejection (no crystal phases with a sizing), or one method alone. Angle injection
 /// throws InvalidInput (it needs the periodic Delaunay mesh). Fixed disks never move.
 /// `options.after_surface_operation`, when set, runs after every operation.

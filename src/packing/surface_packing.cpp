@@ -51,8 +51,8 @@ SurfaceIndex::SurfaceIndex(std::shared_ptr<const SurfaceDomain> domain, double c
     area += 0.5 * norm(cross(b - a, c - a));
     cumulative_area_.push_back(area);
     // Register the cells of a barycentric grid of points at most cell/2 apart: every
-    // point of the triangle is then within cell/2 of a registered cell, which
-    // triangles_near's margin of one cell covers.
+    // point of the triangle is then within cell/2 of a registered point, so within
+    // triangles_near's margin of half a cell.
     const double longest = std::sqrt(std::max({squared_norm(b - a), squared_norm(c - b), squared_norm(a - c)}));
     const int n = std::max(1, static_cast<int>(std::ceil(longest / (0.5 * cell))));
     keys.clear();
@@ -82,7 +82,7 @@ SurfacePoint SurfaceIndex::on_boundary(std::size_t l, std::size_t k, double s) c
 
 void SurfaceIndex::triangles_near(Vec3 q, double R, std::vector<std::uint32_t>& out) const {
   out.clear();
-  grid_.for_each_in_box(q, R + grid_.cell(), [&](std::uint32_t t) { out.push_back(t); });
+  grid_.for_each_in_box(q, R + 0.5 * grid_.cell(), [&](std::uint32_t t) { out.push_back(t); });
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());
 }
@@ -137,7 +137,7 @@ double index_cell(const SurfaceDomain& domain, const SurfaceSizing& sizing) {
 SurfacePacking::SurfacePacking(std::shared_ptr<const SurfaceDomain> domain, SurfaceSizing sizing)
     : index_(std::make_shared<const SurfaceIndex>(domain, index_cell(*domain, sizing))),
       sizing_(std::make_shared<const SurfaceSizing>(std::move(sizing))),
-      grid_(sizing_->max_radius()) {
+      grid_(2 * sizing_->max_radius()) {
   if (!sizing_->is_constant() && sizing_->vertex_radii().size() != domain->vertices().size()) {
     throw InvalidInput("surface packing: the sizing has " + std::to_string(sizing_->vertex_radii().size()) +
                        " vertex radii but the surface has " + std::to_string(domain->vertices().size()) +

@@ -43,10 +43,14 @@ inline void check_direction(Method method, bool eject) {
 /// The phases for a method, in order. Injection phases move on at their area fraction
 /// (automatic schedule) or when they stall; ejection phases when they stall. No crystal
 /// growth for varying radii (paper, 6); `angle` is null where angle injection is not
-/// defined (surfaces), and asking for it then throws InvalidInput.
+/// defined (surfaces), and asking for it then throws InvalidInput. Without
+/// `repeller_before_crystal` the automatic schedule goes from void injection straight to
+/// the crystal (on a curved surface a crystal barely grows in the dense random packing
+/// repeller injection leaves, and the repeller phase is the slow one).
 template <class P>
 std::vector<PhasePlan<P>> plan_for(const TuneOptions& o, bool eject, bool one_radius,
-                                   std::size_t (*angle)(P&, Rng&, std::size_t, const std::function<void()>&)) {
+                                   std::size_t (*angle)(P&, Rng&, std::size_t, const std::function<void()>&),
+                                   bool repeller_before_crystal = true) {
   using Plan = PhasePlan<P>;
   const Plan void_phase{Phase::void_injection, &void_inject, nullptr, o.void_until};
   const Plan repeller_phase{Phase::repeller_injection, &repeller_inject, nullptr, o.repeller_until};
@@ -67,8 +71,9 @@ std::vector<PhasePlan<P>> plan_for(const TuneOptions& o, bool eject, bool one_ra
       if (eject) return one_radius ? std::vector<Plan>{sift_phase, attractor_phase, crystal_eject_phase}
                                    : std::vector<Plan>{sift_phase, attractor_phase};
       // Without crystal growth the repeller phase is the last: it runs until it stalls.
-      return one_radius ? std::vector<Plan>{void_phase, repeller_phase, crystal_phase, finish}
-                        : std::vector<Plan>{void_phase, finish};
+      if (!one_radius) return {void_phase, finish};
+      return repeller_before_crystal ? std::vector<Plan>{void_phase, repeller_phase, crystal_phase, finish}
+                                     : std::vector<Plan>{void_phase, crystal_phase, finish};
     case Method::void_injection: return alone(void_phase);
     case Method::repeller_injection: return alone(repeller_phase);
     case Method::crystal_injection: return {crystal_phase, finish};

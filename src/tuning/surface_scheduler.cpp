@@ -38,7 +38,7 @@ TuneResult tune(SurfacePacking& packing, const Target& target, Rng& rng, const T
   if (packing.empty()) throw InvalidInput("tune: the packing is empty; sample the surface first");
   const std::size_t goal = target_count(target, packing);
   const auto plans = detail::plan_for<SurfacePacking>(options, goal < packing.size(),
-                                                      packing.sizing().is_constant(), nullptr);
+                                                      packing.sizing().is_constant(), nullptr, false);
   // The boundary first, at the spacing of a hexagonal packing of the target's count.
   const double eta = static_cast<double>(goal) / density_unit(packing);
   respace_surface_boundary(packing, 1 / std::sqrt(eta * 2 * std::sqrt(3.0) / 3.14159265358979323846), rng);
