@@ -58,12 +58,12 @@ std::size_t attractor_eject(SurfaceUndoLog& log, SurfacePacking& packing, DiskId
   const double rp = packing.radius(p);
   // Each neighbour moves as close to p as it can while still covering its own void,
   // into p's disk if it likes: p will go, or move where it conflicts with none.
-  for (const DiskId q : detail::mobile_neighbors(packing, cp, rp, p, rng)) {
+  for (const DiskId q : mobile_neighbors(packing, cp, rp, p, rng)) {
     const Vec3 cq = packing.center(q);
     const double rq = packing.radius(q);
-    const auto voids = detail::voids_near(packing, cq, detail::void_reach(rq), {q});
+    const auto voids = voids_near(packing, cq, void_reach(rq), {q});
     if (voids.empty()) continue;
-    const auto spots = detail::covering_positions(packing, voids, cq, 2 * rq, q, p, &cp);
+    const auto spots = covering_positions(packing, voids, cq, 2 * rq, q, p, &cp);
     const SurfacePoint* best = nullptr;
     double best_d2 = squared_norm(cq - cp) * (1 - 1e-9);
     for (const SurfacePoint& s : spots) {
@@ -73,13 +73,13 @@ std::size_t attractor_eject(SurfaceUndoLog& log, SurfacePacking& packing, DiskId
     if (!best) continue;
     const std::size_t before = log.mark();
     log.move(q, *best);
-    if (!detail::void_free_near(packing, cq, rq)) log.revert_to(before);
+    if (!void_free_near(packing, cq, rq)) log.revert_to(before);
   }
   log.remove(p);
   const auto voids = voids_near(packing, cp, void_reach(rp));
   if (voids.empty()) return 1;
   // p's void is still there: p comes back where it covers it best, if it can.
-  const auto spots = detail::covering_positions(packing, voids, cp, 2 * rp, kNoDisk);
+  const auto spots = covering_positions(packing, voids, cp, 2 * rp, kNoDisk);
   if (spots.empty()) {
     log.revert_to(mark);
     return 0;
@@ -92,7 +92,7 @@ std::size_t attractor_eject(SurfaceUndoLog& log, SurfacePacking& packing, DiskId
     if (far < pick_far) pick = i, pick_far = far;
   }
   log.insert(spots[pick], 0);
-  if (!detail::void_free_near(packing, cp, rp)) log.revert_to(mark);
+  if (!void_free_near(packing, cp, rp)) log.revert_to(mark);
   return 0;
 }
 
