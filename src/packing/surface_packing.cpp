@@ -127,10 +127,13 @@ SurfacePoint SurfaceIndex::point_by_area(double u1, double u2, double u3) const 
 
 namespace {
 double index_cell(const SurfaceDomain& domain, const SurfaceSizing& sizing) {
-  // Cells of about two radii, but never so small that a huge mesh floods the map.
-  const Vec3 ext = domain.bbox_max() - domain.bbox_min();
-  const double diag = norm(ext);
-  return std::max(2 * sizing.max_radius(), diag * 1e-4);
+  // Cells of about two radii, or of the mean edge where triangles are larger (else a
+  // coarse mesh and small disks register each triangle in thousands of cells).
+  double edges = 0;
+  for (const auto& t : domain.triangles())
+    for (int k = 0; k < 3; ++k) edges += norm(domain.vertices()[t[(k + 1) % 3]] - domain.vertices()[t[k]]);
+  const double mean_edge = edges / (3.0 * domain.triangles().size());
+  return std::max(2 * sizing.max_radius(), mean_edge);
 }
 }  // namespace
 
