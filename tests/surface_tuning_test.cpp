@@ -22,8 +22,10 @@ struct Case {
   const char* file;
   double r_over_diagonal;
 };
-// A closed sphere, a closed genus-2 surface, an open surface (a boundary loop).
-const Case kCases[] = {{"sphere.off", 0.05}, {"eight.off", 0.04}, {"mesh_with_border.off", 0.02}};
+// A closed sphere, a closed genus-2 surface, an open surface (a boundary loop), and a
+// larger closed genus-3 sculpture.
+const Case kCases[] = {
+    {"sphere.off", 0.05}, {"eight.off", 0.04}, {"mesh_with_border.off", 0.02}, {"elephant.off", 0.02}};
 
 TEST(SurfaceMps, MaximalAndConflictFreeOnRealSurfaces) {
   for (const Case& c : kCases) {

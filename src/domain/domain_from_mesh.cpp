@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <sstream>
 
+#include "../io/file_extension.h"
 #include "../io/polygon_soup.h"
 #include "disktune/errors.h"
 #include "half_edges.h"
@@ -114,13 +115,6 @@ std::vector<std::vector<Vec2>> chain(const std::vector<Vec2>& points,
   return loops;
 }
 
-std::string lower_extension(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext;
-}
-
 PlanarDomain read_mesh_domain(const std::string& path) {
   const detail::PolygonSoup soup = detail::read_polygon_soup(path);
   if (soup.polygons.empty()) throw InvalidInput(path + ": the mesh has no faces");
@@ -181,7 +175,7 @@ PlanarDomain planar_domain_from_triangles(
 }
 
 PlanarDomain read_planar_domain(const std::string& path) {
-  const std::string ext = lower_extension(path);
+  const std::string ext = detail::lower_extension(path);
   if (ext == ".poly") return read_poly(path);
   if (ext == ".off" || ext == ".obj") return read_mesh_domain(path);
   throw InvalidInput("cannot read a planar domain from " + path + ": unknown extension '" + ext +

@@ -14,6 +14,7 @@
 #include "disktune/errors.h"
 #include "disktune/openmesh/surface_from_openmesh.h"
 #include "disktune/surface_domain.h"
+#include "file_extension.h"
 
 namespace disktune {
 namespace {
@@ -39,10 +40,7 @@ struct DoubleTraits : OpenMesh::DefaultTraits {
 SurfaceDomain read_surface_openmesh(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw IoError("cannot open the mesh file " + path + ": check the path and permissions");
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  if (ext == ".off" && starts_with_comment(in)) {
+  if (detail::lower_extension(path) == ".off" && starts_with_comment(in)) {
     throw IoError("OpenMesh cannot read " + path +
                   ": the OFF file starts with a '#' comment, which OpenMesh's OFF reader "
                   "rejects; read it with read_surface (CGAL) or move the comment after the "
