@@ -41,10 +41,10 @@ inline oracle::SurfaceReport surface_report(const SurfacePacking& packing, std::
 }
 
 /// Checks the oracle's verdict, with its summary as the failure message.
-#define EXPECT_SURFACE_OK(packing)                  \
-  do {                                              \
-    const auto report_ = surface_report(packing);   \
-    EXPECT_TRUE(report_.ok()) << report_.summary(); \
+#define EXPECT_SURFACE_OK(packing)                                   \
+  do {                                                               \
+    const auto report_ = ::disktune::test::surface_report(packing); \
+    EXPECT_TRUE(report_.ok()) << report_.summary();                  \
   } while (0)
 
 }  // namespace disktune::test

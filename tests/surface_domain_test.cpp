@@ -19,6 +19,8 @@
 #include "disktune/cgal/surface_from_cgal.h"
 #include "disktune/openmesh/surface_from_openmesh.h"
 #include "disktune/surface_domain.h"
+#include "disktune/surface_tuning.h"
+#include "surface_checks.h"
 #include "test_util.h"
 
 namespace disktune {
@@ -243,6 +245,27 @@ TEST(SurfaceDomainAdapters, CgalAndOpenMeshAgreeWithReadSurface) {
     SCOPED_TRACE("read_surface_openmesh");
     expect_same(read_surface_openmesh(data(name)), ref, 1e-6);  // OFF parsed as float
   }
+}
+
+// The algorithms see only the SurfaceDomain: a CGAL Surface_mesh and an OpenMesh
+// TriMesh, read from the same file, give packings the oracle accepts, and the CGAL
+// adapter (same coordinates) gives the very sample read_surface does.
+TEST(SurfaceDomainAdapters, SamplingRunsOnEitherMesh) {
+  const auto ref = std::make_shared<const SurfaceDomain>(read_surface(data("eight.off")));
+  CGAL::Surface_mesh<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3> sm;
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(data("eight.off"), sm));
+  OpenMesh::TriMesh_ArrayKernelT<> om;
+  ASSERT_TRUE(OpenMesh::IO::read_mesh(om, data("eight.off")));
+  const auto from_cgal = std::make_shared<const SurfaceDomain>(surface_domain_from(sm));
+  const auto from_openmesh = std::make_shared<const SurfaceDomain>(surface_domain_from(om));
+  Rng a(3), b(3), c(3);
+  const SurfacePacking p = sample_surface_mps(ref, SurfaceSizing::constant(0.05), a);
+  const SurfacePacking q = sample_surface_mps(from_cgal, SurfaceSizing::constant(0.05), b);
+  const SurfacePacking o = sample_surface_mps(from_openmesh, SurfaceSizing::constant(0.05), c);
+  ASSERT_EQ(p.size(), q.size());
+  for (const DiskId id : p.ids()) EXPECT_EQ(p.center(id), q.center(id));
+  EXPECT_SURFACE_OK(o);
+  EXPECT_GT(o.size(), 100u);
 }
 
 }  // namespace
