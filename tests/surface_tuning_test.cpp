@@ -110,6 +110,25 @@ TEST(SurfaceTune, EachOperationKeepsTheInvariants) {
   }
 }
 
+// Between operations of the automatic schedule, both ways, the packing stays valid.
+TEST(SurfaceTune, ScheduleKeepsTheInvariantsBetweenOperations) {
+  const auto domain = surface_file("mesh_with_border.off");
+  for (const double factor : {0.75, 1.3}) {
+    Rng rng(8);
+    SurfacePacking packing = sample_surface_mps(domain, SurfaceSizing::constant(0.03 * diagonal(*domain)), rng);
+    TuneOptions options;
+    std::size_t operations = 0;
+    options.after_surface_operation = [&](const SurfacePacking& now) {
+      if (++operations % 15 != 0) return;
+      const auto report = surface_report(now, 2);
+      ASSERT_TRUE(report.ok()) << "x" << factor << " operation " << operations << ": " << report.summary();
+    };
+    const auto goal = static_cast<std::size_t>(std::lround(factor * packing.size()));
+    EXPECT_TRUE(tune(packing, Target::count(goal), rng, options).reached) << "x" << factor;
+    EXPECT_GT(operations, 15u);
+  }
+}
+
 TEST(SurfaceTune, VaryingRadiiStayValid) {
   const auto domain = surface_file("eight.off");
   // A linear field along z: radii from 0.025 to 0.05 of the diagonal.
