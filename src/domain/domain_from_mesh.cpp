@@ -56,10 +56,7 @@ std::vector<std::size_t> boundary_successors(const std::vector<Vec2>& points,
   const std::vector<detail::HalfEdge> edges = detail::sorted_half_edges(tris);
   const std::size_t none = points.size();
   std::vector<std::size_t> next(points.size(), none);
-  for (std::size_t g = 0; g < edges.size();) {
-    std::size_t end = g;
-    while (end < edges.size() && edges[end].lo == edges[g].lo && edges[end].hi == edges[g].hi)
-      ++end;
+  detail::for_each_edge(edges, [&](std::size_t g, std::size_t end) {
     const detail::HalfEdge& e = edges[g];
     const std::string between =
         "the edge between " + vertex_text(points, e.lo) + " and " + vertex_text(points, e.hi);
@@ -83,8 +80,7 @@ std::vector<std::size_t> boundary_successors(const std::vector<Vec2>& points,
       }
       next[from] = to;
     }
-    g = end;
-  }
+  });
   return next;
 }
 

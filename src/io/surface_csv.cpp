@@ -8,6 +8,7 @@
 #include <unordered_set>
 #include <vector>
 
+#include "../domain/point_text.h"
 #include "csv_numbers.h"
 #include "disktune/errors.h"
 #include "disktune/io.h"
@@ -33,13 +34,6 @@ double segment_distance(Vec3 p, Vec3 a, Vec3 b) {
   double t = len2 > 0 ? dot(p - a, ab) / len2 : 0;
   t = std::clamp(t, 0.0, 1.0);
   return norm(p - (a + ab * t));
-}
-
-std::string point_text(Vec3 p) {
-  std::ostringstream s;
-  s.precision(17);
-  s << "(" << p.x << ", " << p.y << ", " << p.z << ")";
-  return s.str();
 }
 
 }  // namespace
@@ -90,7 +84,7 @@ void read_surface_csv(const std::string& path, SurfacePacking& packing) {
     const double r = std::isfinite(best) ? packing.radius_at(q) : reach;
     const double r_given = has_r ? rows.at(k, 3) : r;
     if (!(best <= kOnSurface * std::min(r, r_given))) {
-      where << "point " << point_text(p) << " lies ";
+      where << "point " << detail::point_text(p) << " lies ";
       if (std::isfinite(best)) {
         where << best << " from the surface";
       } else {
@@ -105,7 +99,7 @@ void read_surface_csv(const std::string& path, SurfacePacking& packing) {
         where << " asked for; give the radius the samples were made with (--radius " << r_given
               << ")";
       } else {
-        where << " the sizing " << packing.sizing().description() << " gives at " << point_text(p)
+        where << " the sizing " << packing.sizing().description() << " gives at " << detail::point_text(p)
               << "; give the sizing the samples were made with";
       }
       throw InvalidInput(where.str());
