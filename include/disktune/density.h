@@ -13,6 +13,9 @@ namespace disktune {
 double area_fraction(std::size_t count, double r, double area);
 double relative_radius(std::size_t count, double r, double area);
 
+/// The relative radius rho = sqrt(eta 2 sqrt3 / pi) that goes with an area fraction.
+double relative_radius_for(double eta);
+
 /// The disk count whose area fraction is closest to `eta` (rounded to nearest).
 std::size_t count_for_area_fraction(double eta, double r, double area);
 /// The disk count whose relative radius is closest to `rho`.

@@ -44,5 +44,8 @@ SurfaceMeshCheck check_surface_mesh(const SurfaceMesh& mesh);
 /// naming the allowed extensions, for any other extension, and IoError when the file
 /// cannot be written.
 void write_surface_mesh(const std::string& path, const SurfaceMesh& mesh);
+/// Throws as write_surface_mesh does for a path whose extension it cannot write, so a
+/// caller can refuse it before any work.
+void check_surface_mesh_path(const std::string& path);
 
 }  // namespace disktune

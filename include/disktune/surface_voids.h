@@ -39,6 +39,9 @@ struct BoundaryGap {
   double t0, t1;
 };
 std::vector<BoundaryGap> uncovered_boundary(const SurfacePacking& packing, bool fixed_only);
+/// The same for edge e of loop l alone, appended to `out`.
+void uncovered_on_boundary_edge(const SurfacePacking& packing, std::size_t l, std::size_t e, bool fixed_only,
+                                std::vector<BoundaryGap>& out);
 
 /// True when no two disks cover each other's centers (the prior-disk rule, pairwise: a
 /// center may lie in a larger disk, which came later).

@@ -22,4 +22,12 @@ inline Vec3 cross(Vec3 a, Vec3 b) {
 inline double squared_norm(Vec3 a) { return dot(a, a); }
 inline double norm(Vec3 a) { return std::sqrt(dot(a, a)); }
 
+/// Distance from p to the segment [a, b] (to a when a == b).
+inline double distance_to_segment(Vec3 p, Vec3 a, Vec3 b) {
+  const Vec3 ab = b - a;
+  const double len2 = squared_norm(ab);
+  const double t = len2 > 0 ? std::fmin(std::fmax(dot(p - a, ab) / len2, 0.0), 1.0) : 0;
+  return norm(p - (a + ab * t));
+}
+
 }  // namespace disktune

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "disktune/boundary.h"
+#include "disktune/density.h"
 #include "disktune/errors.h"
 #include "disktune/io.h"
 #include "disktune/sampling.h"
@@ -158,7 +159,7 @@ std::string CommandDomain::density_text(std::size_t count) const {
   const double eta = static_cast<double>(count) / unit;
   char text[64];
   std::snprintf(text, sizeof text, "eta = %.4f, rho = %.4f", eta,
-                std::sqrt(eta * 2 * std::sqrt(3.0) / 3.14159265358979323846));
+                relative_radius_for(eta));
   return text;
 }
 

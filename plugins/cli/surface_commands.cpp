@@ -3,18 +3,16 @@
 // .stl that is not flat): samples as CSV x,y,z,r, the restricted Delaunay mesh as OFF,
 // OBJ or PLY, and a JSON report. Each command's file dispatches here when
 // names_surface(--domain) holds (command_domain.h decides).
-#include <algorithm>
-#include <cctype>
 #include <charconv>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <memory>
 #include <sstream>
 
 #include "command_domain.h"
 #include "commands.h"
+#include "disktune/density.h"
 #include "disktune/errors.h"
 #include "disktune/io.h"
 #include "disktune/quality.h"
@@ -163,13 +161,7 @@ int run_surface_tune(const TuneJob& job) {
 
 int run_surface_mesh(const std::string& input, const DomainArgs& domain_args,
                      const std::string& output) {
-  std::string ext = std::filesystem::path(output).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  if (ext != ".off" && ext != ".obj" && ext != ".ply") {  // fail before any work
-    throw InvalidInput("cannot write the surface mesh '" + output +
-                       "': unknown extension; supported on a surface: .off, .obj, .ply");
-  }
+  check_surface_mesh_path(output);  // fail before any work
   check_output_folder(output);
   const CommandDomain domain = open_domain(domain_args);
   const SurfacePacking packing = domain.read_surface(input, false);
@@ -214,7 +206,7 @@ int run_surface_report(const SurfaceReportJob& job) {
   SurfaceMeshQuality q = measure_surface_mesh(m.mesh, m.radius);
   q.hausdorff = hausdorff_distance(m.mesh, surface, 10000, 1);
   const double eta = static_cast<double>(packing.size()) / domain.unit;
-  const double rho = std::sqrt(eta * 2 * std::sqrt(3.0) / 3.14159265358979323846);
+  const double rho = relative_radius_for(eta);
 
   if (!job.json.empty()) {
     std::ostringstream j;

@@ -18,6 +18,8 @@ double relative_radius(std::size_t count, double r, double area) {
   return r / std::sqrt(2 * area / (kSqrt3 * static_cast<double>(count)));
 }
 
+double relative_radius_for(double eta) { return std::sqrt(eta * 2 * kSqrt3 / kPi); }
+
 std::size_t count_for_area_fraction(double eta, double r, double area) {
   return static_cast<std::size_t>(std::llround(eta * area / (kPi * (r / 2) * (r / 2))));
 }

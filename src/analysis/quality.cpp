@@ -303,7 +303,7 @@ PlanarQualityReport measure_planar_quality(const Packing& packing, const PlanarM
   q.area = area;
   q.count = packing.size();
   q.area_fraction = static_cast<double>(q.count) / density_unit(packing, area);
-  q.relative_radius = std::sqrt(q.area_fraction * 2 * std::sqrt(3.0) / 3.14159265358979323846);
+  q.relative_radius = relative_radius_for(q.area_fraction);
   q.maximal = is_maximal(packing);
   q.conflict_free = is_conflict_free(packing);
   // The nearest pair need not be a mesh edge (a constraint may cut it): ask the grid.

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "disktune/errors.h"
+#include "triangle_arrangement.h"
 
 namespace disktune {
 
@@ -44,12 +45,11 @@ std::optional<Circle> TrianglePlane::section(Vec3 center, double r) const {
 
 void sphere_corners_in_triangle(const TrianglePlane& t, Vec3 c1, double r1, Vec3 c2, double r2,
                                 double tol, std::vector<Vec3>& out) {
-  const auto s1 = t.section(c1, r1), s2 = t.section(c2, r2);
-  if (!s1 || !s2) return;
-  const CircleIntersection x = intersect_circles(s1->center, s1->radius, s2->center, s2->radius);
-  for (int k = 0; k < x.count; ++k) {
-    if (t.contains(x.points[k], tol)) out.push_back(t.to_space(x.points[k]));
-  }
+  // The circle-circle vertices of the two balls' arrangement.
+  const std::vector<Ball> balls{{c1, r1, 0}, {c2, r2, 1}};
+  for_each_arrangement_vertex(t, balls, tol, [&](Vec3 p, DiskId a, DiskId b) {
+    if (a != kNoTag && b != kNoTag) out.push_back(p);
+  });
 }
 
 }  // namespace disktune

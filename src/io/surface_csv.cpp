@@ -28,14 +28,6 @@ std::uint64_t edge_key(std::size_t a, std::size_t b) {
   return (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint64_t>(b);
 }
 
-double segment_distance(Vec3 p, Vec3 a, Vec3 b) {
-  const Vec3 ab = b - a;
-  const double len2 = squared_norm(ab);
-  double t = len2 > 0 ? dot(p - a, ab) / len2 : 0;
-  t = std::clamp(t, 0.0, 1.0);
-  return norm(p - (a + ab * t));
-}
-
 }  // namespace
 
 void write_surface_csv(const std::string& path, const SurfacePacking& packing) {
@@ -112,7 +104,7 @@ void read_surface_csv(const std::string& path, SurfacePacking& packing) {
         for (int e = 0; e < 3 && !flags; ++e) {
           const std::size_t a = tri[e], b = tri[(e + 1) % 3];
           if (boundary.count(edge_key(a, b)) &&
-              segment_distance(p, domain.vertices()[a], domain.vertices()[b]) <= kOnBoundary * r) {
+              distance_to_segment(p, domain.vertices()[a], domain.vertices()[b]) <= kOnBoundary * r) {
             flags = kFixed;
           }
         }

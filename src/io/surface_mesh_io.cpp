@@ -18,8 +18,8 @@ Format format_for(const std::string& path) {
   if (ext == ".off") return Format::Off;
   if (ext == ".obj") return Format::Obj;
   if (ext == ".ply") return Format::Ply;
-  throw InvalidInput("cannot tell the surface mesh format of '" + path +
-                     "' from its extension; supported: .off, .obj, .ply (all ASCII)");
+  throw InvalidInput("cannot write the surface mesh '" + path +
+                     "': unknown extension; supported on a surface: .off, .obj, .ply (all ASCII)");
 }
 
 void put_point(std::ostream& out, Vec3 p) {
@@ -39,6 +39,8 @@ void put_faces(std::ostream& out, const SurfaceMesh& mesh, const char* prefix, s
 }
 
 }  // namespace
+
+void check_surface_mesh_path(const std::string& path) { format_for(path); }
 
 void write_surface_mesh(const std::string& path, const SurfaceMesh& mesh) {
   const Format format = format_for(path);

@@ -15,22 +15,48 @@ namespace {
 void sample_boundary(SurfacePacking& packing, Rng& rng) {
   const SurfaceDomain& d = packing.domain();
   if (d.is_closed()) return;
-  for (;;) {
-    const std::vector<BoundaryGap> gaps = uncovered_boundary(packing, true);
-    if (gaps.empty()) return;
-    // A dart uniform over the uncovered length.
-    std::vector<double> cumulative;
-    double total = 0;
-    for (const BoundaryGap& g : gaps) {
-      const auto& loop = d.boundary_loops()[g.loop];
-      total += (g.t1 - g.t0) * norm(d.vertices()[loop[(g.edge + 1) % loop.size()]] - d.vertices()[loop[g.edge]]);
-      cumulative.push_back(total);
+  // The gaps of each boundary edge, in loop and edge order; a new disk changes only
+  // those of the edges it reaches, so only those are measured again.
+  struct Edge {
+    std::size_t loop, edge;
+    Vec3 a, b;
+    std::vector<BoundaryGap> gaps;
+  };
+  std::vector<Edge> edges;
+  for (std::size_t l = 0; l < d.boundary_loops().size(); ++l) {
+    const auto& loop = d.boundary_loops()[l];
+    for (std::size_t e = 0; e < loop.size(); ++e) {
+      edges.push_back({l, e, d.vertices()[loop[e]], d.vertices()[loop[(e + 1) % loop.size()]], {}});
+      uncovered_on_boundary_edge(packing, l, e, true, edges.back().gaps);
     }
+  }
+  std::vector<double> cumulative;
+  std::vector<const BoundaryGap*> gaps;
+  for (;;) {
+    // A dart uniform over the uncovered length.
+    cumulative.clear();
+    gaps.clear();
+    double total = 0;
+    for (const Edge& e : edges) {
+      for (const BoundaryGap& g : e.gaps) {
+        total += (g.t1 - g.t0) * norm(e.b - e.a);
+        cumulative.push_back(total);
+        gaps.push_back(&g);
+      }
+    }
+    if (gaps.empty()) return;
     const std::size_t k = std::min<std::size_t>(
         std::upper_bound(cumulative.begin(), cumulative.end(), uniform01(rng) * total) - cumulative.begin(),
         gaps.size() - 1);
-    const BoundaryGap& g = gaps[k];
-    packing.insert(packing.index().on_boundary(g.loop, g.edge, g.t0 + (g.t1 - g.t0) * uniform01(rng)), kFixed);
+    const BoundaryGap g = *gaps[k];
+    const DiskId id =
+        packing.insert(packing.index().on_boundary(g.loop, g.edge, g.t0 + (g.t1 - g.t0) * uniform01(rng)), kFixed);
+    const double reach = packing.radius(id) * (1 + 1e-6);
+    for (Edge& e : edges) {
+      if (distance_to_segment(packing.center(id), e.a, e.b) > reach) continue;
+      e.gaps.clear();
+      uncovered_on_boundary_edge(packing, e.loop, e.edge, true, e.gaps);
+    }
   }
 }
 

@@ -48,7 +48,7 @@ TuneResult tune(Packing& packing, const PlanarDomain& domain, const Target& targ
   // r / rho, rho = sqrt(eta 2 sqrt3 / pi) the target's relative radius.
   const double eta = static_cast<double>(target_count(target, packing, domain.area())) /
                      density_unit(packing, domain.area());
-  tune_boundary(packing, domain, 1 / std::sqrt(eta * 2 * std::sqrt(3.0) / 3.14159265358979323846), rng);
+  tune_boundary(packing, domain, 1 / relative_radius_for(eta), rng);
   return tune_in(packing, domain.area(), target, rng, options, t0);
 }
 

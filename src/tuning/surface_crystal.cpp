@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "../voids/triangle_arrangement.h"
+#include "../geometry/triangle_arrangement.h"
 #include "crystal_grow.h"
 #include "disktune/errors.h"
 #include "disktune/surface_tuning.h"

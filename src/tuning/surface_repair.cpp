@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "../voids/triangle_arrangement.h"
+#include "../geometry/triangle_arrangement.h"
 #include "disktune/tolerance.h"
 #include "void_repair.h"
 

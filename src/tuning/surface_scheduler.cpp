@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "disktune/density.h"
 #include "disktune/errors.h"
 #include "disktune/surface_tuning.h"
 #include "phase_loop.h"
@@ -36,15 +37,15 @@ std::size_t target_count(const Target& target, const SurfacePacking& packing) {
 TuneResult tune(SurfacePacking& packing, const Target& target, Rng& rng, const TuneOptions& options) {
   const auto t0 = std::chrono::steady_clock::now();
   if (packing.empty()) throw InvalidInput("tune: the packing is empty; sample the surface first");
-  const std::size_t goal = target_count(target, packing);
+  const double unit = density_unit(packing);  // the sizing's alone: it stays as disks change
+  const std::size_t goal = target_count_for_unit(target, unit);
   const auto plans = detail::plan_for<SurfacePacking>(options, goal < packing.size(),
                                                       packing.sizing().is_constant(), nullptr, false);
   // The boundary first, at the spacing of a hexagonal packing of the target's count.
-  const double eta = static_cast<double>(goal) / density_unit(packing);
-  respace_surface_boundary(packing, 1 / std::sqrt(eta * 2 * std::sqrt(3.0) / 3.14159265358979323846), rng);
+  const double eta = static_cast<double>(goal) / unit;
+  respace_surface_boundary(packing, 1 / relative_radius_for(eta), rng);
   if (options.after_surface_operation) options.after_surface_operation(packing);
-  return detail::run_phases(packing, density_unit(packing), goal, plans, rng, options,
-                            options.after_surface_operation, t0);
+  return detail::run_phases(packing, unit, goal, plans, rng, options, options.after_surface_operation, t0);
 }
 
 }  // namespace disktune

@@ -9,11 +9,12 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <sstream>
+#include <optional>
 
+#include "../domain/point_text.h"
 #include "disktune/errors.h"
 #include "disktune/tolerance.h"
-#include "triangle_arrangement.h"
+#include "../geometry/triangle_arrangement.h"
 
 namespace disktune {
 namespace {
@@ -99,46 +100,55 @@ void void_points_near(const SurfacePacking& packing, Vec3 q, double R, const std
   }
 }
 
-bool is_maximal(const SurfacePacking& packing) {
+namespace {
+
+// A void point of the whole surface, or none: the packing is maximal.
+std::optional<SurfaceVoidPoint> first_void_point(const SurfacePacking& packing) {
   std::vector<SurfaceVoidPoint> found;
   for (std::size_t t = 0; t < packing.domain().triangles().size(); ++t) {
     void_points_in_triangle(packing, t, {}, found);
-    if (!found.empty()) return false;
+    if (!found.empty()) return found.front();
   }
-  return true;
+  return std::nullopt;
+}
+
+}  // namespace
+
+bool is_maximal(const SurfacePacking& packing) { return !first_void_point(packing); }
+
+void uncovered_on_boundary_edge(const SurfacePacking& packing, std::size_t l, std::size_t e, bool fixed_only,
+                                std::vector<BoundaryGap>& out) {
+  const auto& v = packing.domain().vertices();
+  const auto& loop = packing.domain().boundary_loops()[l];
+  const Vec3 a = v[loop[e]], b = v[loop[(e + 1) % loop.size()]], d = b - a;
+  thread_local std::vector<std::array<double, 2>> covered;
+  covered.clear();
+  packing.for_each_near(a + d * 0.5, 0.5 * norm(d) + packing.max_radius() * (1 + kRelTol), [&](DiskId j) {
+    if (fixed_only && !(packing.flags(j) & kFixed)) return;
+    // |a + s d - c|^2 <= r^2 (with the coverage slack) for s in [s0, s1].
+    const Vec3 f = a - packing.center(j);
+    const double rr = packing.radius(j) * (1 + kRelTol);
+    const double A = dot(d, d), B = dot(f, d), C = dot(f, f) - rr * rr;
+    const double disc = B * B - A * C;
+    if (disc < 0) return;
+    const double root = std::sqrt(disc);
+    const double s0 = std::max(0.0, (-B - root) / A), s1 = std::min(1.0, (-B + root) / A);
+    if (s0 <= s1) covered.push_back({s0, s1});
+  });
+  std::sort(covered.begin(), covered.end());
+  double reach = 0;
+  for (const auto& c : covered) {
+    if (c[0] > reach) out.push_back({l, e, reach, c[0]});
+    reach = std::max(reach, c[1]);
+  }
+  if (reach < 1) out.push_back({l, e, reach, 1});
 }
 
 std::vector<BoundaryGap> uncovered_boundary(const SurfacePacking& packing, bool fixed_only) {
   std::vector<BoundaryGap> gaps;
-  const auto& v = packing.domain().vertices();
   const auto& loops = packing.domain().boundary_loops();
-  std::vector<std::array<double, 2>> covered;
-  for (std::size_t l = 0; l < loops.size(); ++l) {
-    for (std::size_t e = 0; e < loops[l].size(); ++e) {
-      const Vec3 a = v[loops[l][e]], b = v[loops[l][(e + 1) % loops[l].size()]], d = b - a;
-      const double len = norm(d);
-      covered.clear();
-      packing.for_each_near(a + d * 0.5, 0.5 * len + packing.max_radius() * (1 + kRelTol), [&](DiskId j) {
-        if (fixed_only && !(packing.flags(j) & kFixed)) return;
-        // |a + s d - c|^2 <= r^2 (with the coverage slack) for s in [s0, s1].
-        const Vec3 f = a - packing.center(j);
-        const double rr = packing.radius(j) * (1 + kRelTol);
-        const double A = dot(d, d), B = dot(f, d), C = dot(f, f) - rr * rr;
-        const double disc = B * B - A * C;
-        if (disc < 0) return;
-        const double root = std::sqrt(disc);
-        const double s0 = std::max(0.0, (-B - root) / A), s1 = std::min(1.0, (-B + root) / A);
-        if (s0 <= s1) covered.push_back({s0, s1});
-      });
-      std::sort(covered.begin(), covered.end());
-      double reach = 0;
-      for (const auto& c : covered) {
-        if (c[0] > reach) gaps.push_back({l, e, reach, c[0]});
-        reach = std::max(reach, c[1]);
-      }
-      if (reach < 1) gaps.push_back({l, e, reach, 1});
-    }
-  }
+  for (std::size_t l = 0; l < loops.size(); ++l)
+    for (std::size_t e = 0; e < loops[l].size(); ++e) uncovered_on_boundary_edge(packing, l, e, fixed_only, gaps);
   return gaps;
 }
 
@@ -168,24 +178,17 @@ bool is_conflict_free(const SurfacePacking& packing) {
 
 void validate_surface_packing(const SurfacePacking& packing, const std::string& what) {
   if (packing.empty()) throw InvalidInput(what + ": no disks");
-  std::ostringstream msg;
   for (const DiskId i : packing.ids()) {
     if (const DiskId j = conflicting_disk(packing, i); j != kNoDisk) {
-      const Vec3 c = packing.center(i);
-      const Vec3 d = packing.center(j);
-      msg << what << ": the disks centered at (" << c.x << ", " << c.y << ", " << c.z << ") and (" << d.x << ", "
-          << d.y << ", " << d.z << ") cover each other's centers (a conflict); sample the surface again";
-      throw InvalidInput(msg.str());
+      throw InvalidInput(what + ": the disks centered at " + detail::point_text(packing.center(i)) + " and " +
+                         detail::point_text(packing.center(j)) +
+                         " cover each other's centers (a conflict); sample the surface again");
     }
   }
-  std::vector<SurfaceVoidPoint> found;
-  for (std::size_t t = 0; t < packing.domain().triangles().size(); ++t) {
-    void_points_in_triangle(packing, t, {}, found);
-    if (found.empty()) continue;
-    const Vec3 p = found.front().at.p;
-    msg << what << ": the point (" << p.x << ", " << p.y << ", " << p.z << ") of triangle " << t
-        << " is covered by no disk (the packing is not maximal); sample the surface again";
-    throw InvalidInput(msg.str());
+  if (const auto v = first_void_point(packing)) {
+    throw InvalidInput(what + ": the point " + detail::point_text(v->at.p) + " of triangle " +
+                       std::to_string(v->at.triangle) +
+                       " is covered by no disk (the packing is not maximal); sample the surface again");
   }
 }
 

@@ -14,30 +14,32 @@
 
 namespace disktune {
 
+/// The tag of no ball (the value of kNoDisk, which lives a layer up).
+inline constexpr DiskId kNoTag = static_cast<DiskId>(-1);
+
 struct Ball {
   Vec3 center;
   double radius;
-  DiskId tag;  // the disk it stands for (kNoDisk: none)
+  DiskId tag;  // the disk it stands for (kNoTag: none)
 };
 
 /// emit(point in space, tag a, tag b) for each arrangement vertex in the closed
-/// triangle (within `tol`): corners with (kNoDisk, kNoDisk), circle-edge crossings with
-/// (a, kNoDisk), circle-circle crossings with (a, b). Balls missing the plane are skipped.
+/// triangle (within `tol`): corners with (kNoTag, kNoTag), circle-edge crossings with
+/// (a, kNoTag), circle-circle crossings with (a, b). Balls missing the plane are skipped.
 /// With `toward`, also the points of the triangle, of each edge and of each circle
-/// nearest to it (tags kNoDisk): where a region's point nearest `toward` may lie
+/// nearest to it (tags kNoTag): where a region's point nearest `toward` may lie
 /// besides its vertices.
 template <class Emit>
 void for_each_arrangement_vertex(const TrianglePlane& t, const std::vector<Ball>& balls, double tol, Emit&& emit,
                                  const Vec3* toward = nullptr) {
-  constexpr DiskId none = static_cast<DiskId>(-1);
-  for (int k = 0; k < 3; ++k) emit(t.to_space(t.corner(k)), none, none);
+  for (int k = 0; k < 3; ++k) emit(t.to_space(t.corner(k)), kNoTag, kNoTag);
   const Vec2 goal = toward ? t.to_plane(*toward) : Vec2{};
   if (toward) {
-    if (t.contains(goal, tol)) emit(t.to_space(goal), none, none);
+    if (t.contains(goal, tol)) emit(t.to_space(goal), kNoTag, kNoTag);
     for (int k = 0; k < 3; ++k) {
       const Vec2 p = t.corner(k), e = t.corner((k + 1) % 3) - p;
       const double s = std::clamp(dot(goal - p, e) / dot(e, e), 0.0, 1.0);
-      emit(t.to_space(p + e * s), none, none);
+      emit(t.to_space(p + e * s), kNoTag, kNoTag);
     }
   }
   thread_local std::vector<Circle> circles;
@@ -66,7 +68,7 @@ void for_each_arrangement_vertex(const TrianglePlane& t, const std::vector<Ball>
       const double len = norm(d);
       if (len > 0) {
         const Vec2 q = c.center + d * (c.radius / len);
-        if (t.contains(q, tol)) emit(t.to_space(q), none, none);
+        if (t.contains(q, tol)) emit(t.to_space(q), kNoTag, kNoTag);
       }
     }
     // Edge crossings: |p + s e - center| = radius for s in [0, 1].
@@ -77,7 +79,7 @@ void for_each_arrangement_vertex(const TrianglePlane& t, const std::vector<Ball>
       if (disc < 0) continue;
       const double root = std::sqrt(disc);
       for (const double s : {(-b - root) / a, (-b + root) / a}) {
-        if (s >= 0 && s <= 1) emit(t.to_space(p + e * s), balls[owner[i]].tag, none);
+        if (s >= 0 && s <= 1) emit(t.to_space(p + e * s), balls[owner[i]].tag, kNoTag);
         if (root == 0) break;
       }
     }
