@@ -205,6 +205,33 @@ TEST_P(InDomain, CrystalInjectionTo085) { tune_and_judge("eta0.85_crystal_inj", 
 
 TEST_P(InDomain, CrystalEjectionTo035) { tune_and_judge("eta0.35_crystal_ej", 0.35, Method::crystal_ejection); }
 
+// Where the one-ring attractor has stalled, pulling three rings removes more disks,
+// each sweep leaving a valid packing.
+TEST_P(InDomain, WideAttractorRemovesDisksWhereTheAttractorStalled) {
+  Packing p = mps(3);
+  Rng rng(4);
+  auto sweep = [&](std::size_t (*op)(Packing&, DiskId, Rng&, std::size_t)) {
+    std::size_t removed = 0;
+    for (const DiskId id : p.ids()) {
+      if (p.alive(id)) removed += op(p, id, rng, 1000);
+    }
+    return removed;
+  };
+  for (int k = 0; k < 100 && sweep(&attractor_eject) > 0;) ++k;
+  const std::size_t stalled = p.size();
+  std::size_t removed = 0;
+  for (int k = 0; k < 3; ++k) {
+    removed += sweep(&wide_attractor_eject);
+    const auto rep = judge(p, od_, r_);
+    EXPECT_TRUE(rep.ok()) << "wide sweep " << k << ": " << rep.summary();
+  }
+  EXPECT_EQ(p.size(), stalled - removed);
+  // One-ring sweeps remove 3 or 4 here, three rings 10 to 18.
+  EXPECT_GE(removed, stalled / 100) << "from " << stalled;
+  std::printf("[figures] %-16s attractor stalled at N=%zu, three wide sweeps removed %zu\n", GetParam().name.c_str(),
+              stalled, removed);
+}
+
 INSTANTIATE_TEST_SUITE_P(PlanarTuning, InDomain, ::testing::ValuesIn(domain_files()),
                          [](const ::testing::TestParamInfo<DomainFile>& info) { return info.param.name; });
 

@@ -66,15 +66,18 @@ TEST(SurfaceMps, SameSeedSameSample) {
   for (const DiskId id : p.ids()) EXPECT_EQ(p.center(id), q.center(id));
 }
 
-// MPS, then ejection by 32 and injection by 40 percent (the paper reports -38 %
-// and +44 % on a surface; docs/surfaces.md has what is reached where), on the genus-2
-// surface and the open one, each result checked by the oracle.
+// MPS, then ejection to 0.6 and injection to 1.4 times its count (the paper reports
+// -38 % and +44 % on a surface; docs/surfaces.md has what is reached where), on the
+// genus-2 surface and the open one, each result checked by the oracle. The radii are
+// the largest at which 0.6 is reached for every seed tried (docs/surfaces.md): with
+// fewer disks, curvature and the boundary leave less room.
 TEST(SurfaceTune, EjectionAndInjectionReachExactCounts) {
-  for (const Case& c : {kCases[1], kCases[2]}) {
+  const Case cases[] = {{"eight.off", 0.015}, {"mesh_with_border.off", 0.008}};
+  for (const Case& c : cases) {
     const auto domain = surface_file(c.file);
-    Rng rng(11);
+    Rng rng(1);
     const SurfacePacking mps = sample_surface_mps(domain, SurfaceSizing::constant(c.r_over_diagonal * diagonal(*domain)), rng);
-    for (const double factor : {0.68, 1.4}) {
+    for (const double factor : {0.6, 1.4}) {
       SCOPED_TRACE(std::string(c.file) + " x" + std::to_string(factor));
       SurfacePacking packing = mps;
       const std::size_t goal = static_cast<std::size_t>(std::lround(factor * mps.size()));
@@ -86,6 +89,32 @@ TEST(SurfaceTune, EjectionAndInjectionReachExactCounts) {
   }
 }
 
+// Where the one-ring attractor has stalled, pulling three rings removes more disks,
+// each step valid.
+TEST(SurfaceTune, WideAttractorRemovesDisksWhereTheAttractorStalled) {
+  const auto domain = surface_file("eight.off");
+  Rng rng(2);
+  SurfacePacking packing = sample_surface_mps(domain, SurfaceSizing::constant(0.03 * diagonal(*domain)), rng);
+  auto sweep = [&](std::size_t (*op)(SurfacePacking&, DiskId, Rng&, std::size_t)) {
+    std::size_t removed = 0;
+    for (const DiskId id : packing.ids()) {
+      if (packing.alive(id)) removed += op(packing, id, rng, 1000);
+    }
+    return removed;
+  };
+  for (int k = 0; k < 100 && sweep(&attractor_eject) > 0;) ++k;
+  const std::size_t stalled = packing.size();
+  EXPECT_SURFACE_OK(packing);
+  std::size_t removed = 0;
+  for (int k = 0; k < 3; ++k) {
+    removed += sweep(&wide_attractor_eject);
+    EXPECT_SURFACE_OK(packing);
+  }
+  EXPECT_EQ(packing.size(), stalled - removed);
+  EXPECT_GE(removed, stalled / 50) << "from " << stalled;  // one ring: 4 of 395
+  std::printf("[figures] eight.off attractor stalled at N=%zu, three wide sweeps removed %zu\n", stalled, removed);
+}
+
 // Every single operation leaves the packing conflict-free and maximal.
 TEST(SurfaceTune, EachOperationKeepsTheInvariants) {
   const auto domain = surface_file("eight.off");
@@ -93,7 +122,8 @@ TEST(SurfaceTune, EachOperationKeepsTheInvariants) {
   const std::pair<const char*, Op> ops[] = {{"void", &void_inject},
                                             {"repeller", &repeller_inject},
                                             {"sift", &sift_eject},
-                                            {"attractor", &attractor_eject}};
+                                            {"attractor", &attractor_eject},
+                                            {"wide attractor", &wide_attractor_eject}};
   for (const auto& [name, op] : ops) {
     Rng rng(3);
     SurfacePacking packing = sample_surface_mps(domain, SurfaceSizing::constant(0.06 * diagonal(*domain)), rng);

@@ -71,6 +71,10 @@ TEST(Ejection, AttractorEjectionKeepsTheInvariantsAfterEveryOperation) {
   run_each_op_checked(&attractor_eject, "attractor", -1);
 }
 
+TEST(Ejection, WideAttractorEjectionKeepsTheInvariantsAfterEveryOperation) {
+  run_each_op_checked(&wide_attractor_eject, "wide attractor", -1);
+}
+
 TEST(Ejection, HitsExactCountsWithFallingCountsAndValidStates) {
   for (std::uint64_t seed = 1; seed <= 3; ++seed) {
     const PeriodicBox box(1.0, 0.8);

@@ -48,6 +48,7 @@ std::size_t void_inject(SurfacePacking& packing, DiskId p, Rng& rng, std::size_t
 std::size_t repeller_inject(SurfacePacking& packing, DiskId p, Rng& rng, std::size_t max_added);
 std::size_t sift_eject(SurfacePacking& packing, DiskId p, Rng& rng, std::size_t max_removed);
 std::size_t attractor_eject(SurfacePacking& packing, DiskId p, Rng& rng, std::size_t max_removed);
+std::size_t wide_attractor_eject(SurfacePacking& packing, DiskId p, Rng& rng, std::size_t max_removed);
 
 /// Crystal growth on the surface (one radius only): a crystal of frozen disks at spacing
 /// r (injection) or sqrt(3) r (ejection) grows over the surface, its sites the points at

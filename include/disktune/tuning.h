@@ -168,6 +168,13 @@ std::size_t sift_eject(Packing& packing, DiskId p, Rng& rng, std::size_t max_rem
 /// corners, else everything goes back. Returns the number of disks removed (0 or 1).
 std::size_t attractor_eject(Packing& packing, DiskId p, Rng& rng, std::size_t max_removed);
 
+/// Attractor ejection over three rings of neighbours: the disks up to three neighbour
+/// steps from p are pulled, the outer rings first, each toward the disk nearer p it
+/// neighbours, so that the first ring has room to close over p. It removes disks where
+/// the one-ring attractor has stalled (the automatic schedule's last ejection phase),
+/// at about four times its cost per operation.
+std::size_t wide_attractor_eject(Packing& packing, DiskId p, Rng& rng, std::size_t max_removed);
+
 /// Injection for angles (2.4), one sweep: the circumcenter of every obtuse triangle of
 /// the periodic Delaunay triangulation, in random order, is used as a repeller point
 /// (triangles whose disks moved meanwhile wait for the next sweep). Returns the number

@@ -110,9 +110,10 @@ void add_tune_command(CLI::App& app, Action& action) {
   cmd->add_option("--method", args->method,
                   "auto: denser by void, then repeller, then crystal injection (switching at eta "
                   "0.75 and 0.79, or when a phase stalls), sparser by sifting, then attractor, then "
-                  "crystal ejection; or one phase alone: void, repeller, crystal, angle (repel "
-                  "from the circumcenters of obtuse Delaunay triangles), sift, attractor, "
-                  "crystal-eject")
+                  "crystal ejection, then attractor ejection over three rings of neighbours (on a "
+                  "surface before the crystal); or one phase alone: void, repeller, crystal, angle "
+                  "(repel from the circumcenters of obtuse Delaunay triangles), sift, attractor (one "
+                  "ring, then three), crystal-eject")
       ->check(CLI::IsMember(
           {"auto", "void", "repeller", "crystal", "angle", "sift", "attractor", "crystal-eject"}))
       ->capture_default_str();

@@ -2,11 +2,13 @@
 // Attractor ejection (paper, 3.1): pull each neighbour q of p as far toward p as it
 // can go while still covering its own void and staying out of every disk but p's;
 // then p is removed if nothing needs it any more, or moved to where it covers what
-// is left, or everything goes back.
+// is left, or everything goes back. The wide variant first pulls further rings of
+// neighbours, each toward the disk nearer p (outer rings first), to make room.
 #include <algorithm>
 #include <cmath>
 
 #include "disktune/tuning.h"
+#include "attractor_rings.h"
 #include "void_repair.h"
 
 namespace disktune {
@@ -14,9 +16,9 @@ namespace {
 
 // How far along q + t v (t in [0, 1]) the disk at q can go, keeping its radius: it must
 // keep every corner of its void within its radius (an interval of t around 0 per
-// corner), and its center must not enter a disk other than p's and its own (the first
-// entry bounds t).
-double reach_toward(const Packing& packing, DiskId p, const Neighbor& q, Vec2 v,
+// corner), and its center must not enter a disk other than `passable`'s and its own
+// (the first entry bounds t) nor stay in one it lies in.
+double reach_toward(const Packing& packing, DiskId passable, const Neighbor& q, Vec2 v,
                     const std::vector<Corner>& corners) {
   const double a = squared_norm(v), r = q.radius;
   double t = 1.0;
@@ -26,8 +28,14 @@ double reach_toward(const Packing& packing, DiskId p, const Neighbor& q, Vec2 v,
     t = std::min(t, (-b + std::sqrt(b * b - a * c0)) / a);
   }
   packing.for_each_near(q.image, std::sqrt(a) + packing.max_radius(), [&](const Neighbor& k) {
-    if (k.id == p || k.id == q.id) return;
+    if (k.id == passable || k.id == q.id) return;
     const Vec2 w = q.image - k.image;
+    // q's center may lie in a larger disk that came later (the prior-disk rule), but
+    // moved it is a new center there, whose radius may also grow past k's center.
+    if (is_conflict(squared_norm(w), k.radius)) {
+      t = 0;
+      return;
+    }
     const double b = dot(v, w), c0 = squared_norm(w) - k.radius * k.radius, disc = b * b - a * c0;
     if (disc <= 0 || b >= 0) return;  // the line misses the disk, or leads away from it
     t = std::min(t, std::max((-b - std::sqrt(disc)) / a, 0.0));
@@ -39,19 +47,27 @@ double reach_toward(const Packing& packing, DiskId p, const Neighbor& q, Vec2 v,
 
 namespace detail {
 
-std::size_t attractor_eject(UndoLog& log, Packing& packing, DiskId p, Rng& rng, std::size_t max_removed) {
+std::size_t attractor_eject(UndoLog& log, Packing& packing, DiskId p, Rng& rng, std::size_t max_removed, int rings) {
   if (max_removed == 0 || (packing.flags(p) & (kFixed | kFrozen))) return 0;
   const std::size_t mark = log.mark();
   const double r = packing.radius(p);
   const Vec2 pc = packing.center(p);
-  const std::vector<Neighbor> near = detail::mobile_neighbors(packing, pc, p, rng);
+  // Each disk moves toward the one nearer p that reached it (its image as seen from
+  // there), the outer rings first so that they make room; only the first ring may
+  // enter p's disk.
+  const auto pulls = rings_around(
+      Neighbor{p, pc, 0, r}, rings,
+      [&](const Neighbor& q) { return detail::mobile_neighbors(packing, q.image, q.id, rng); },
+      [](const Neighbor& q) { return q.id; });
 
   std::vector<Corner> corners;
-  for (const Neighbor& q : near) {
+  for (std::size_t i = pulls.size(); i-- > 1;) {
+    const Neighbor& q = pulls[i].item;
+    const Neighbor& toward = pulls[pulls[i].toward].item;
     corners.clear();
     corners_in_region(packing, q.image, q.radius, {q.id}, corners);
-    const Vec2 v = pc - q.image;
-    double t = reach_toward(packing, p, q, v, corners);
+    const Vec2 v = toward.image - q.image;
+    double t = reach_toward(packing, toward.id == p ? p : kNoDisk, q, v, corners);
     // With varying radii q's radius changes on the way: where it no longer covers its
     // void, try 0.9 of the step, three times at most (6.2). Any shorter step still
     // keeps q out of the other disks. (A non-convex domain may not hold the target.)
@@ -96,7 +112,12 @@ std::size_t attractor_eject(UndoLog& log, Packing& packing, DiskId p, Rng& rng, 
 
 std::size_t attractor_eject(Packing& packing, DiskId p, Rng& rng, std::size_t max_removed) {
   detail::UndoLog log(packing);
-  return detail::attractor_eject(log, packing, p, rng, max_removed);
+  return detail::attractor_eject(log, packing, p, rng, max_removed, 1);
+}
+
+std::size_t wide_attractor_eject(Packing& packing, DiskId p, Rng& rng, std::size_t max_removed) {
+  detail::UndoLog log(packing);
+  return detail::attractor_eject(log, packing, p, rng, max_removed, detail::kWideAttractorRings);
 }
 
 }  // namespace disktune

@@ -172,7 +172,7 @@ class Crystal {
       if (mobile(p_, n.id)) around.push_back(n.id);
     });
     for (const DiskId id : around) {
-      if (p_.alive(id) && mobile(p_, id) && within(p_.size() - 1)) detail::attractor_eject(log, p_, id, rng_, 1);
+      if (p_.alive(id) && mobile(p_, id) && within(p_.size() - 1)) detail::attractor_eject(log, p_, id, rng_, 1, 1);
     }
   }
 

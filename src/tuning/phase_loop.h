@@ -43,14 +43,16 @@ inline void check_direction(Method method, bool eject) {
 /// The phases for a method, in order. Injection phases move on at their area fraction
 /// (automatic schedule) or when they stall; ejection phases when they stall. No crystal
 /// growth for varying radii (paper, 6); `angle` is null where angle injection is not
-/// defined (surfaces), and asking for it then throws InvalidInput. Without
-/// `repeller_before_crystal` the automatic schedule goes from void injection straight to
-/// the crystal (on a curved surface a crystal barely grows in the dense random packing
-/// repeller injection leaves, and the repeller phase is the slow one).
+/// defined (surfaces), and asking for it then throws InvalidInput. On a `curved` surface
+/// a lattice cannot close, so the crystal phases do less: injection goes from void
+/// injection straight to the crystal (which barely grows in the dense random packing
+/// repeller injection leaves, and the repeller phase is the slow one), and ejection runs
+/// the wide attractor before the crystal (after it, the crystal removes nothing; before
+/// it, its frozen lattice leaves the wide attractor less room).
 template <class P>
 std::vector<PhasePlan<P>> plan_for(const TuneOptions& o, bool eject, bool one_radius,
                                    std::size_t (*angle)(P&, Rng&, std::size_t, const std::function<void()>&),
-                                   bool repeller_before_crystal = true) {
+                                   bool curved = false) {
   using Plan = PhasePlan<P>;
   const Plan void_phase{Phase::void_injection, &void_inject, nullptr, o.void_until};
   const Plan repeller_phase{Phase::repeller_injection, &repeller_inject, nullptr, o.repeller_until};
@@ -58,6 +60,9 @@ std::vector<PhasePlan<P>> plan_for(const TuneOptions& o, bool eject, bool one_ra
   const Plan angle_phase{Phase::angle_injection, nullptr, angle, 2.0};
   const Plan sift_phase{Phase::sift_ejection, &sift_eject, nullptr, 2.0};
   const Plan attractor_phase{Phase::attractor_ejection, &attractor_eject, nullptr, 2.0};
+  // Three rings of neighbours where one ring has stalled, the crystal (if it ran
+  // first) thawed so that its disks can make room too.
+  const Plan wide_attractor_phase{Phase::attractor_ejection, &wide_attractor_eject, nullptr, 2.0, true};
   const Plan crystal_eject_phase{Phase::crystal_ejection, nullptr, &crystal_eject, 2.0};
   auto alone = [](Plan p) { return p.until = 2.0, std::vector<Plan>{p}; };
   // Crystal steps near the exact target can all overshoot (the voids a step refills need
@@ -68,12 +73,15 @@ std::vector<PhasePlan<P>> plan_for(const TuneOptions& o, bool eject, bool one_ra
   check_direction(o.method, eject);
   switch (o.method) {
     case Method::automatic:
-      if (eject) return one_radius ? std::vector<Plan>{sift_phase, attractor_phase, crystal_eject_phase}
-                                   : std::vector<Plan>{sift_phase, attractor_phase};
+      if (eject) {
+        if (!one_radius) return {sift_phase, attractor_phase, wide_attractor_phase};
+        return curved ? std::vector<Plan>{sift_phase, attractor_phase, wide_attractor_phase, crystal_eject_phase}
+                      : std::vector<Plan>{sift_phase, attractor_phase, crystal_eject_phase, wide_attractor_phase};
+      }
       // Without crystal growth the repeller phase is the last: it runs until it stalls.
       if (!one_radius) return {void_phase, finish};
-      return repeller_before_crystal ? std::vector<Plan>{void_phase, repeller_phase, crystal_phase, finish}
-                                     : std::vector<Plan>{void_phase, crystal_phase, finish};
+      return curved ? std::vector<Plan>{void_phase, crystal_phase, finish}
+                    : std::vector<Plan>{void_phase, repeller_phase, crystal_phase, finish};
     case Method::void_injection: return alone(void_phase);
     case Method::repeller_injection: return alone(repeller_phase);
     case Method::crystal_injection: return {crystal_phase, finish};
@@ -84,7 +92,7 @@ std::vector<PhasePlan<P>> plan_for(const TuneOptions& o, bool eject, bool one_ra
       }
       return alone(angle_phase);
     case Method::sift_ejection: return alone(sift_phase);
-    case Method::attractor_ejection: return alone(attractor_phase);
+    case Method::attractor_ejection: return {attractor_phase, wide_attractor_phase};
     case Method::crystal_ejection: return alone(crystal_eject_phase);
   }
   return {};

@@ -118,7 +118,7 @@ class SurfaceLattice {
     });
     std::sort(around.begin(), around.end());
     for (const DiskId id : around) {
-      if (p_.alive(id) && mobile(p_, id) && within(p_.size() - 1)) detail::attractor_eject(log, p_, id, rng_, 1);
+      if (p_.alive(id) && mobile(p_, id) && within(p_.size() - 1)) detail::attractor_eject(log, p_, id, rng_, 1, 1);
     }
   }
 

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "disktune/surface_tuning.h"
+#include "attractor_rings.h"
 #include "surface_repair.h"
 
 namespace disktune {
@@ -50,30 +51,45 @@ std::size_t sift_eject(SurfacePacking& packing, DiskId p, Rng& rng, std::size_t 
 }
 
 namespace detail {
+namespace {
 
-std::size_t attractor_eject(SurfaceUndoLog& log, SurfacePacking& packing, DiskId p, Rng& rng, std::size_t max_removed) {
+// Moves q as close to `to` as it can while it still covers its own void and conflicts
+// with no disk but `passable`'s; nothing when no covering position is closer.
+void pull_toward(SurfaceUndoLog& log, SurfacePacking& packing, DiskId q, Vec3 to, DiskId passable) {
+  const Vec3 cq = packing.center(q);
+  const double rq = packing.radius(q);
+  const auto voids = voids_near(packing, cq, void_reach(rq), {q});
+  if (voids.empty()) return;
+  const auto spots = covering_positions(packing, voids, cq, 2 * rq, q, passable, &to);
+  const SurfacePoint* best = nullptr;
+  double best_d2 = squared_norm(cq - to) * (1 - 1e-9);
+  for (const SurfacePoint& s : spots) {
+    const double d2 = squared_norm(s.p - to);
+    if (d2 < best_d2) best = &s, best_d2 = d2;
+  }
+  if (!best) return;
+  const std::size_t before = log.mark();
+  log.move(q, *best);
+  if (!void_free_near(packing, cq, rq)) log.revert_to(before);
+}
+
+}  // namespace
+
+std::size_t attractor_eject(SurfaceUndoLog& log, SurfacePacking& packing, DiskId p, Rng& rng, std::size_t max_removed,
+                            int rings) {
   if ((packing.flags(p) & (kFixed | kFrozen)) || max_removed == 0) return 0;
   const std::size_t mark = log.mark();
   const Vec3 cp = packing.center(p);
   const double rp = packing.radius(p);
-  // Each neighbour moves as close to p as it can while still covering its own void,
-  // into p's disk if it likes: p will go, or move where it conflicts with none.
-  for (const DiskId q : mobile_neighbors(packing, cp, rp, p, rng)) {
-    const Vec3 cq = packing.center(q);
-    const double rq = packing.radius(q);
-    const auto voids = voids_near(packing, cq, void_reach(rq), {q});
-    if (voids.empty()) continue;
-    const auto spots = covering_positions(packing, voids, cq, 2 * rq, q, p, &cp);
-    const SurfacePoint* best = nullptr;
-    double best_d2 = squared_norm(cq - cp) * (1 - 1e-9);
-    for (const SurfacePoint& s : spots) {
-      const double d2 = squared_norm(s.p - cp);
-      if (d2 < best_d2) best = &s, best_d2 = d2;
-    }
-    if (!best) continue;
-    const std::size_t before = log.mark();
-    log.move(q, *best);
-    if (!void_free_near(packing, cq, rq)) log.revert_to(before);
+  // Each disk moves as close as it can to the one nearer p that reached it, the outer
+  // rings first so that they make room; the first ring may enter p's disk: p will go,
+  // or move where it conflicts with none.
+  const auto pulls = rings_around(
+      p, rings, [&](DiskId q) { return mobile_neighbors(packing, packing.center(q), packing.radius(q), q, rng); },
+      [](DiskId q) { return q; });
+  for (std::size_t i = pulls.size(); i-- > 1;) {
+    const DiskId toward = pulls[pulls[i].toward].item;
+    pull_toward(log, packing, pulls[i].item, packing.center(toward), toward == p ? p : kNoDisk);
   }
   log.remove(p);
   const auto voids = voids_near(packing, cp, void_reach(rp));
@@ -100,7 +116,12 @@ std::size_t attractor_eject(SurfaceUndoLog& log, SurfacePacking& packing, DiskId
 
 std::size_t attractor_eject(SurfacePacking& packing, DiskId p, Rng& rng, std::size_t max_removed) {
   detail::SurfaceUndoLog log(packing);
-  return detail::attractor_eject(log, packing, p, rng, max_removed);
+  return detail::attractor_eject(log, packing, p, rng, max_removed, 1);
+}
+
+std::size_t wide_attractor_eject(SurfacePacking& packing, DiskId p, Rng& rng, std::size_t max_removed) {
+  detail::SurfaceUndoLog log(packing);
+  return detail::attractor_eject(log, packing, p, rng, max_removed, detail::kWideAttractorRings);
 }
 
 }  // namespace disktune

@@ -48,9 +48,11 @@ std::vector<DiskId> mobile_neighbors(const SurfacePacking& packing, Vec3 point, 
 std::size_t repair_void(SurfaceUndoLog& log, const SurfacePacking& packing, Vec3 q, double R, Rng& rng,
                         std::size_t max_added);
 
-/// Attractor ejection of p (surface_tuning.h), its edits recorded in `log` (taken back
-/// to where they started when it fails), so that a caller can take it back too.
-std::size_t attractor_eject(SurfaceUndoLog& log, SurfacePacking& packing, DiskId p, Rng& rng, std::size_t max_removed);
+/// Attractor ejection of p over `rings` rings of neighbours (surface_tuning.h), its edits
+/// recorded in `log` (taken back to where they started when it fails), so that a caller
+/// can take it back too.
+std::size_t attractor_eject(SurfaceUndoLog& log, SurfacePacking& packing, DiskId p, Rng& rng, std::size_t max_removed,
+                            int rings);
 
 
 }  // namespace disktune::detail

@@ -40,7 +40,7 @@ TuneResult tune(SurfacePacking& packing, const Target& target, Rng& rng, const T
   const double unit = density_unit(packing);  // the sizing's alone: it stays as disks change
   const std::size_t goal = target_count_for_unit(target, unit);
   const auto plans = detail::plan_for<SurfacePacking>(options, goal < packing.size(),
-                                                      packing.sizing().is_constant(), nullptr, false);
+                                                      packing.sizing().is_constant(), nullptr, true);
   // The boundary first, at the spacing of a hexagonal packing of the target's count.
   const double eta = static_cast<double>(goal) / unit;
   respace_surface_boundary(packing, 1 / relative_radius_for(eta), rng);

@@ -59,9 +59,10 @@ bool covers_all(const Packing& packing, Vec2 c, const std::vector<Corner>& corne
 /// disks are left).
 bool void_free_near(const Packing& packing, Vec2 center, double r);
 
-/// Attractor ejection of p (see tuning.h), its edits recorded in `log` (taken back to
-/// where they started when it fails), so that a caller can take it back too.
-std::size_t attractor_eject(UndoLog& log, Packing& packing, DiskId p, Rng& rng, std::size_t max_removed);
+/// Attractor ejection of p over `rings` rings of neighbours (see tuning.h), its edits
+/// recorded in `log` (taken back to where they started when it fails), so that a caller
+/// can take it back too.
+std::size_t attractor_eject(UndoLog& log, Packing& packing, DiskId p, Rng& rng, std::size_t max_removed, int rings);
 
 /// Restores maximality inside D(center, r) after a disk there was lifted or moved: while
 /// the region holds uncovered corners, injects a disk at void_corner (paper, 2.1). Corners are the only place voids can hide: everything outside the
