@@ -68,7 +68,8 @@ TEST(SurfaceMps, SameSeedSameSample) {
 
 // MPS, then ejection to 0.6 and injection to 1.4 times its count (the paper reports
 // -38 % and +44 % on a surface; docs/surfaces.md has what is reached where), on the
-// genus-2 surface and the open one, each result checked by the oracle. The radii are
+// genus-2 surface and the open one, each result checked by the oracle and meshed (a
+// manifold restricted Delaunay mesh of the input's genus). The radii are
 // the largest at which 0.6 is reached for every seed tried (docs/surfaces.md): with
 // fewer disks, curvature and the boundary leave less room.
 TEST(SurfaceTune, EjectionAndInjectionReachExactCounts) {
@@ -85,6 +86,11 @@ TEST(SurfaceTune, EjectionAndInjectionReachExactCounts) {
       EXPECT_TRUE(result.reached) << result.count << " of " << goal << ", last phase " << to_string(result.last_phase);
       EXPECT_EQ(packing.size(), result.count);
       EXPECT_SURFACE_OK(packing);
+      std::vector<Vec3> samples;
+      for (const DiskId id : packing.ids()) samples.push_back(packing.center(id));
+      const SurfaceMeshCheck check = check_surface_mesh(restricted_delaunay(samples, *domain));
+      EXPECT_TRUE(check.manifold) << check.problems;
+      EXPECT_EQ(check.genus, domain->genus());
     }
   }
 }
