@@ -74,6 +74,8 @@ class SurfaceIndex {
  private:
   std::shared_ptr<const SurfaceDomain> domain_;
   std::vector<TrianglePlane> planes_;
+  std::vector<Vec3> centroid_;     // with bounding_radius_, a ball around each triangle:
+  std::vector<double> bounding_radius_;  // a cheap first test in triangles_near
   std::vector<double> cumulative_area_;
   std::vector<std::vector<std::uint32_t>> boundary_triangle_;  // per loop, per edge
   SpaceGrid grid_;
