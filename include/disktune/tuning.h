@@ -60,9 +60,11 @@ std::string to_string(Phase phase);
 /// the others run one phase alone (angle injection is not part of the automatic
 /// schedule: the paper offers it as an alternative that targets obtuse triangles).
 /// Targets below the current count run ejection: automatic is sifting, then attractor
-/// ejection, then crystal ejection. Crystal injection (alone or in the automatic
-/// schedule) is followed by repeller injection for the last few disks, which crystal steps
-/// near the exact target cannot add without passing it. With a sizing (varying radii)
+/// ejection, then crystal ejection, then wide attractor ejection (three rings; on a
+/// surface before the crystal); `attractor_ejection` is one ring, then three. Crystal
+/// injection (alone or in the automatic schedule) is followed by repeller injection for
+/// the last few disks, which crystal steps near the exact target cannot add without
+/// passing it. With a sizing (varying radii)
 /// there are no crystal phases (paper, 6).
 enum class Method {
   automatic,
