@@ -74,8 +74,11 @@ class SurfaceIndex {
  private:
   std::shared_ptr<const SurfaceDomain> domain_;
   std::vector<TrianglePlane> planes_;
-  std::vector<Vec3> centroid_;     // with bounding_radius_, a ball around each triangle:
-  std::vector<double> bounding_radius_;  // a cheap first test in triangles_near
+  struct Bound {  // a ball around a triangle: a cheap first test in triangles_near
+    Vec3 center;
+    double radius;
+  };
+  std::vector<Bound> bounds_;
   std::vector<double> cumulative_area_;
   std::vector<std::vector<std::uint32_t>> boundary_triangle_;  // per loop, per edge
   SpaceGrid grid_;

@@ -48,10 +48,8 @@ SurfaceIndex::SurfaceIndex(std::shared_ptr<const SurfaceDomain> domain, double c
   for (std::size_t t = 0; t < tris.size(); ++t) {
     const Vec3 a = v[tris[t][0]], b = v[tris[t][1]], c = v[tris[t][2]];
     planes_.emplace_back(a, b, c);
-    centroid_.push_back((a + b + c) * (1.0 / 3));
-    bounding_radius_.push_back(
-        std::sqrt(std::max({squared_norm(a - centroid_.back()), squared_norm(b - centroid_.back()),
-                            squared_norm(c - centroid_.back())})));
+    const Vec3 g = (a + b + c) * (1.0 / 3);
+    bounds_.push_back({g, std::sqrt(std::max({squared_norm(a - g), squared_norm(b - g), squared_norm(c - g)}))});
     area += 0.5 * norm(cross(b - a, c - a));
     cumulative_area_.push_back(area);
     // Register the cells of a barycentric grid of points at most cell/2 apart: every
@@ -87,8 +85,8 @@ SurfacePoint SurfaceIndex::on_boundary(std::size_t l, std::size_t k, double s) c
 void SurfaceIndex::triangles_near(Vec3 q, double R, std::vector<std::uint32_t>& out) const {
   out.clear();
   grid_.for_each_in_box(q, R + 0.5 * grid_.cell(), [&](std::uint32_t t) {
-    const double reach = R + bounding_radius_[t];
-    if (squared_norm(centroid_[t] - q) <= reach * reach) out.push_back(t);
+    const double reach = R + bounds_[t].radius;
+    if (squared_norm(bounds_[t].center - q) <= reach * reach) out.push_back(t);
   });
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());
