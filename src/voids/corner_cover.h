@@ -1,11 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Whether a corner (a point x where the circles of two disks A and B meet) is covered
-// by the other disks (internal). A disk that holds x strictly inside covers it. Disks
-// whose circles pass through x too, within the tolerance, cover it only together with
-// A and B, when they surround x: when the directions from x to their centers are not
-// all in one closed half-plane. Such cocircular corners are normal (hexagonal states,
-// disks placed at corners), and a corner that merely lies on a third circle can still
-// open a wedge of void. Feed the other disks one by one with add().
+// Whether a vertex x of a void's boundary (where the circles of two disks A and B meet,
+// or where a circle meets an edge of a surface triangle) is covered by the other disks
+// (internal). A disk that holds x strictly inside covers it. Disks whose circles pass
+// through x too, within the tolerance, cover it only together with A and B, when they
+// surround x: when the directions from x to their centers are not all in one closed
+// half-plane. Such cocircular corners are normal (hexagonal states, disks placed at
+// corners), and a corner that merely lies on a third circle can still open a wedge of
+// void. On a surface triangle an edge through x counts as a direction too (its
+// outward normal: what lies beyond the edge is the next triangle's to cover). Feed the
+// other disks one by one with add().
 #pragma once
 
 #include <algorithm>
@@ -18,7 +21,20 @@ namespace disktune::detail {
 
 class CornerCover {
  public:
-  CornerCover(Vec2 x, Vec2 a, Vec2 b) : x_(x), through_{a - x, b - x} {}
+  /// x on the circles of the disks centered at a and b.
+  CornerCover(Vec2 x, Vec2 a, Vec2 b) : x_(x) {
+    through(a - x);
+    through(b - x);
+  }
+  /// x on no circle yet: give the directions with through().
+  explicit CornerCover(Vec2 x) : x_(x) {}
+
+  /// A closed half-plane of directions from x, {d : dot(d, direction) >= 0}, that is
+  /// covered next to x: toward the center of a disk whose circle passes through x, or
+  /// out of a triangle across an edge through x.
+  void through(Vec2 direction) {
+    if (n_ < kMax) through_[n_++] = direction;
+  }
 
   /// Takes one other disk into account; true once x is known to be covered (strictly
   /// inside that disk), so callers can stop.
@@ -26,7 +42,7 @@ class CornerCover {
     const double d2 = squared_distance(x_, center);
     if (!is_covered(d2, r)) return false;
     if (is_conflict(d2, r)) return strictly_ = true;
-    if (n_ < kMax) through_[n_++] = center - x_;
+    through(center - x_);
     return false;
   }
 
@@ -52,7 +68,7 @@ class CornerCover {
   static constexpr int kMax = 16;
   Vec2 x_;
   Vec2 through_[kMax];
-  int n_ = 2;
+  int n_ = 0;
   bool strictly_ = false;
 };
 

@@ -12,6 +12,7 @@
 #include <optional>
 
 #include "../domain/point_text.h"
+#include "corner_cover.h"
 #include "disktune/errors.h"
 #include "disktune/tolerance.h"
 #include "../geometry/triangle_arrangement.h"
@@ -31,6 +32,38 @@ void disks_near(const SurfacePacking& packing, Vec3 q, double R, const std::vect
   packing.for_each_near(q, R + packing.max_radius() * (1 + kRelTol), [&](DiskId j) {
     if (!ignored(ignore, j)) out.push_back(j);
   });
+}
+
+// Whether the arrangement vertex p of a triangle (on the circles of disks a and b, where
+// not kNoDisk, and on the triangle's edges it lies on) is covered by the disks of
+// `near`: strictly inside one, or surrounded by those whose circles pass through it
+// (corner_cover.h). A crossing that merely lies on a third circle can still open a
+// wedge of void, and disks placed at void points make such crossings by construction.
+bool vertex_covered(const SurfacePacking& packing, const TrianglePlane& plane, Vec3 p, DiskId a, DiskId b,
+                    const std::vector<DiskId>& near, double tol) {
+  const Vec2 x = plane.to_plane(p);
+  detail::CornerCover cover(x);
+  // Toward the center of the circle a ball cuts in the plane (none for a ball that only
+  // touches the plane at x: it covers nothing around x).
+  const auto toward_circle = [&](DiskId j) {
+    const Vec2 d = plane.to_plane(packing.center(j)) - x;
+    return squared_norm(d) > tol * tol ? std::optional<Vec2>(d) : std::nullopt;
+  };
+  for (const DiskId j : {a, b})
+    if (j != kNoDisk)
+      if (const auto d = toward_circle(j)) cover.through(*d);
+  for (int k = 0; k < 3; ++k) {  // edges through x: beyond them is another triangle's
+    const Vec2 c = plane.corner(k), e = plane.corner((k + 1) % 3) - c;
+    if (cross(e, x - c) <= tol * norm(e)) cover.through(Vec2{e.y, -e.x});
+  }
+  for (const DiskId j : near) {
+    if (j == a || j == b) continue;
+    const double d2 = squared_norm(packing.center(j) - p), r = packing.radius(j);
+    if (is_conflict(d2, r)) return true;  // strictly inside
+    if (is_covered(d2, r))
+      if (const auto d = toward_circle(j)) cover.through(*d);
+  }
+  return cover.covered();
 }
 
 // The void points of triangle t within R of q (R infinite: all of them); `near` holds
@@ -57,12 +90,10 @@ void collect(const SurfacePacking& packing, std::size_t t, Vec3 q, double R, con
     balls.push_back({c, r, j});
   }
   const double R2 = std::isfinite(R) ? R * R : std::numeric_limits<double>::infinity();
-  for_each_arrangement_vertex(plane, balls, kRelTol * packing.max_radius(), [&](Vec3 p, DiskId a, DiskId b) {
+  const double tol = kRelTol * packing.max_radius();
+  for_each_arrangement_vertex(plane, balls, tol, [&](Vec3 p, DiskId a, DiskId b) {
     if (squared_norm(p - q) > R2) return;
-    for (const DiskId j : near) {  // covered by a disk other than a and b?
-      if (j != a && j != b && is_covered(squared_norm(packing.center(j) - p), packing.radius(j))) return;
-    }
-    out.push_back({{p, static_cast<std::uint32_t>(t)}, a, b});
+    if (!vertex_covered(packing, plane, p, a, b, near, tol)) out.push_back({{p, static_cast<std::uint32_t>(t)}, a, b});
   });
 }
 
