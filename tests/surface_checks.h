@@ -4,6 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
+#include <limits>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -22,6 +25,49 @@ inline oracle::SurfaceMeshInput oracle_surface(const SurfaceDomain& d) {
   for (const Vec3 v : d.vertices()) m.vertices.push_back({v.x, v.y, v.z});
   for (const auto& t : d.triangles()) m.triangles.push_back({t[0], t[1], t[2]});
   return m;
+}
+
+/// The surface of the box [0,lx] x [0,ly] x [0,lz], each face a grid of cells (n[k]
+/// along axis k) split into two triangles: with one cell along an axis and several
+/// across it, a CAD-like mesh of long slivers meeting at 90 degree edges.
+inline std::shared_ptr<const SurfaceDomain> box_surface(const std::array<double, 3>& size,
+                                                        const std::array<int, 3>& n) {
+  std::vector<Vec3> vertices;
+  std::vector<SurfaceDomain::Triangle> triangles;
+  std::map<std::array<int, 3>, std::size_t> index;  // grid coordinates -> vertex
+  auto vertex = [&](std::array<int, 3> g) {
+    const auto [it, added] = index.emplace(g, vertices.size());
+    if (added) vertices.push_back({size[0] * g[0] / n[0], size[1] * g[1] / n[1], size[2] * g[2] / n[2]});
+    return it->second;
+  };
+  for (int fixed = 0; fixed < 3; ++fixed) {
+    const int a = (fixed + 1) % 3, b = (fixed + 2) % 3;  // (a, b, fixed) is right-handed
+    for (const int side : {0, n[fixed]})
+      for (int u = 0; u < n[a]; ++u)
+        for (int w = 0; w < n[b]; ++w) {
+          auto at = [&](int du, int dw) {
+            std::array<int, 3> g{};
+            g[fixed] = side, g[a] = u + du, g[b] = w + dw;
+            return vertex(g);
+          };
+          std::array<std::size_t, 4> q{at(0, 0), at(1, 0), at(1, 1), at(0, 1)};
+          if (side == 0) std::swap(q[1], q[3]);  // normals point out of the box
+          triangles.push_back({q[0], q[1], q[2]});
+          triangles.push_back({q[0], q[2], q[3]});
+        }
+  }
+  return std::make_shared<const SurfaceDomain>(std::move(vertices), std::move(triangles));
+}
+
+/// The point of the surface nearest p (brute force), as a surface point for insert().
+inline SurfacePoint nearest_surface_point(const SurfacePacking& packing, Vec3 p) {
+  SurfacePoint best{p, 0};
+  double best_d2 = std::numeric_limits<double>::infinity();
+  for (std::size_t t = 0; t < packing.domain().triangles().size(); ++t) {
+    const Vec3 q = packing.index().closest_point(t, p);
+    if (squared_norm(q - p) < best_d2) best = {q, static_cast<std::uint32_t>(t)}, best_d2 = squared_norm(q - p);
+  }
+  return best;
 }
 
 /// The oracle's verdict on a surface packing; the fixed disks are the boundary disks.
