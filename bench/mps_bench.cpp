@@ -64,12 +64,12 @@ int main(int argc, char** argv) {
                 row.mps / row.delaunay);
     std::fflush(stdout);
   }
-  std::printf("\nwhere the MPS time goes (fastest run), seconds:\n%10s %8s %8s %8s %8s %10s %10s\n",
-              "disks", "darts", "prune", "voids", "build", "darts_n", "void_disks");
+  std::printf("\nwhere the MPS time goes (fastest run), seconds:\n%10s %8s %8s %8s %8s %8s %10s %10s\n",
+              "disks", "darts", "prune", "voids", "build", "check", "darts_n", "void_disks");
   for (const Row& row : rows) {
     const MpsStats& s = row.stats;
-    std::printf("%10zu %8.3f %8.3f %8.3f %8.3f %10zu %10zu\n", row.disks, s.darts_seconds,
-                s.prune_seconds, s.voids_seconds, s.build_seconds, s.darts, s.void_disks);
+    std::printf("%10zu %8.3f %8.3f %8.3f %8.3f %8.3f %10zu %10zu\n", row.disks, s.darts_seconds,
+                s.prune_seconds, s.voids_seconds, s.build_seconds, s.check_seconds, s.darts, s.void_disks);
   }
   const Row& a = rows.front();
   const Row& b = rows.back();

@@ -52,7 +52,12 @@ double tune_seconds(const SurfacePacking& mps, double factor, double budget, std
   try {
     const TuneResult res = tune(packing, Target::count(goal), rng, options);
     if (!res.reached) notes += " x" + std::to_string(factor).substr(0, 3) + " stopped at " + std::to_string(res.count);
-    return since(t0);
+    const double seconds = since(t0);
+    char check[96];  // the final check's share (tuning.h, TuneResult::check_seconds)
+    std::snprintf(check, sizeof check, " x%.1f check %.3f s (%.1f %%)", factor, res.check_seconds,
+                  100 * res.check_seconds / seconds);
+    notes += check;
+    return seconds;
   } catch (const OverBudget&) {
     return -since(t0);
   }

@@ -74,6 +74,8 @@ int main(int argc, char** argv) {
   };
   const TuneResult res = tune(packing, box, Target::area_fraction(etas.back()), rng, options);
   options.on_progress({res.count, area_fraction(res.count, r, 1.0), res.last_phase});
+  std::printf("final check of the result (and the packing kept before each phase): %.3f s of %.3f s (%.2f %%)\n",
+              res.check_seconds, res.seconds, 100 * res.check_seconds / res.seconds);
   for (std::size_t k = 0; k < etas.size(); ++k) {
     if (k >= reached.size()) {
       std::printf("%8.3f %10s %12s %12s %10s  not reached (stopped at eta %.4f)\n", etas[k], "-", "-", "-", "-",

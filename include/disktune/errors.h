@@ -23,4 +23,10 @@ struct IoError : Error {
   using Error::Error;
 };
 
+/// A result failed disktune's own final check (conflict-free and maximal): a bug in
+/// disktune. The message says which check failed and where.
+struct InternalError : Error {
+  using Error::Error;
+};
+
 }  // namespace disktune

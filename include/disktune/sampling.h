@@ -29,6 +29,7 @@ struct MpsStats {
   int levels = 0;               // dart levels run
   // Where the time went, in seconds.
   double darts_seconds = 0, prune_seconds = 0, voids_seconds = 0, build_seconds = 0;
+  double check_seconds = 0;  // the final check of the sample (is it still maximal?)
 };
 
 /// A maximal Poisson-disk sample of the periodic box with uniform radius r: unbiased

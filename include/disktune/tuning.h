@@ -108,6 +108,9 @@ struct TuneResult {
   Phase last_phase = Phase::none;
   std::size_t sweeps = 0;
   double seconds = 0;
+  /// Of `seconds`, the time spent on the final check of the result (and on keeping the
+  /// packing before each phase, to hand back should that check fail).
+  double check_seconds = 0;
 };
 
 /// Moves, adds and removes disks of `packing` (uniform radius, conflict-free and

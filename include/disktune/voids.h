@@ -51,4 +51,9 @@ bool is_maximal(const Packing& packing);
 /// message (e.g. a file name). Linear time.
 void validate_packing(const Packing& packing, const std::string& what);
 
+/// What makes the packing invalid, as a phrase naming the place ("not maximal: the
+/// point (x, y) is covered by no disk", a conflicting pair, no disks); empty when it is
+/// conflict-free and maximal. The exact checks of validate_packing and is_maximal.
+std::string packing_defect(const Packing& packing);
+
 }  // namespace disktune

@@ -149,12 +149,13 @@ int run_surface_tune(const TuneJob& job) {
       job.input.empty() ? domain.sample_surface(rng) : domain.read_surface(job.input, true);
   const std::size_t start = packing.size();
 
-  const TuneResult res = tune_with_progress(start, target, job.method, [&](const TuneOptions& options) {
-    return tune(packing, job.target, rng, options);
-  });
+  const auto write_output = [&] { write_surface_csv(job.output, packing); };
+  const TuneResult res = tune_with_progress(
+      start, target, job.method, [&](const TuneOptions& options) { return tune(packing, job.target, rng, options); },
+      job.output, write_output);
   const double seconds = seconds_since(t0);
 
-  if (!job.output.empty()) write_surface_csv(job.output, packing);
+  if (!job.output.empty()) write_output();
   return report_tune(start, res, domain.density_text(res.count), seconds,
                      " (" + domain.radius_text() + ", " + domain.describe() + ")", job.output);
 }

@@ -51,18 +51,21 @@ int run_tune(const TuneJob& job) {
   Packing packing = job.input.empty() ? domain.sample(rng) : domain.read(job.input, true);
   const std::size_t start = packing.size();
 
-  const TuneResult res = tune_with_progress(start, target, job.method, [&](const TuneOptions& options) {
-    return domain.tune(packing, job.target, rng, options);
-  });
+  const auto write_output = [&] { write_points_csv(job.output, packing); };
+  const TuneResult res = tune_with_progress(
+      start, target, job.method,
+      [&](const TuneOptions& options) { return domain.tune(packing, job.target, rng, options); }, job.output,
+      write_output);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
-  if (!job.output.empty()) write_points_csv(job.output, packing);
+  if (!job.output.empty()) write_output();
   if (!job.svg.empty()) write_packing_svg(job.svg, packing);
   return report_tune(start, res, domain.density_text(res.count), seconds, "", job.output);
 }
 
 TuneResult tune_with_progress(std::size_t start, std::size_t target, Method method,
-                              const std::function<TuneResult(const TuneOptions&)>& run) {
+                              const std::function<TuneResult(const TuneOptions&)>& run, const std::string& output,
+                              const std::function<void()>& write_output) {
   ProgressBar bar;
   TuneOptions options;
   options.method = method;
@@ -72,9 +75,16 @@ TuneResult tune_with_progress(std::size_t start, std::size_t target, Method meth
                   p.area_fraction, to_string(p.phase).c_str());
     bar.update(static_cast<double>(p.count) - start, static_cast<double>(target) - start, status);
   };
-  const TuneResult res = run(options);
-  bar.clear();
-  return res;
+  try {
+    const TuneResult res = run(options);
+    bar.clear();
+    return res;
+  } catch (const InternalError& e) {
+    bar.clear();
+    if (output.empty()) throw;
+    write_output();
+    throw InternalError(std::string(e.what()) + ". That packing was written to " + output);
+  }
 }
 
 int report_tune(std::size_t start, const TuneResult& res, const std::string& density,

@@ -9,6 +9,7 @@
 #include "disktune/sampling.h"
 #include "disktune/sizing.h"
 #include "disktune/voids.h"
+#include "../voids/final_check.h"
 
 namespace disktune {
 namespace {
@@ -112,6 +113,7 @@ Packing sample_mps(std::shared_ptr<const PlanarDomain> domain, double r, Rng& rn
   packing.set_domain(domain);
   sample_boundary(packing, *domain, rng);
   fill_maximal(packing, r, rng);
+  detail::check_sample(packing);
   return packing;
 }
 
@@ -121,6 +123,7 @@ Packing sample_mps(std::shared_ptr<const PlanarDomain> domain, std::shared_ptr<c
   Packing packing = sized_packing(domain->frame(), domain, std::move(sizing), &stats);
   sample_boundary(packing, *domain, rng);
   fill_maximal(packing, stats.min, rng);
+  detail::check_sample(packing);
   return packing;
 }
 
@@ -129,6 +132,7 @@ Packing sample_mps(const PeriodicBox& box, std::shared_ptr<const Sizing> sizing,
   Packing packing = sized_packing(box.frame(), nullptr, std::move(sizing), &stats);
   box.validate_radius(packing.max_radius());
   fill_maximal(packing, stats.min, rng);
+  detail::check_sample(packing);
   return packing;
 }
 

@@ -14,6 +14,7 @@
 #include <chrono>
 
 #include "dart_grid.h"
+#include "../voids/final_check.h"
 #include "disktune/sampling.h"
 
 namespace disktune {
@@ -127,6 +128,8 @@ Packing sample_mps(const PeriodicBox& box, double r, Rng& rng, const MpsOptions&
     if (c.x == c.x) packing.insert(c, r);  // not NaN: the cell holds a center
   }
   lap(st.build_seconds);
+  detail::check_sample(packing);
+  lap(st.check_seconds);
   return packing;
 }
 

@@ -8,6 +8,7 @@
 #include "disktune/errors.h"
 #include "disktune/surface_tuning.h"
 #include "disktune/surface_voids.h"
+#include "../voids/final_check.h"
 
 namespace disktune {
 namespace {
@@ -79,12 +80,15 @@ SurfacePacking sample_surface_mps(std::shared_ptr<const SurfaceDomain> domain, c
   while (!work.empty()) {
     const SurfaceVoidPoint v = work.back();
     work.pop_back();
-    if (packing.covered(v.at.p, v.a, v.b) || packing.conflicts(v.at.p)) continue;
+    // Strictly inside a disk placed since: covered. A point only on such a disk's circle
+    // may still open a wedge of void (surface_voids.h), so it gets a disk too.
+    if (packing.conflicts(v.at.p)) continue;
     const DiskId id = packing.insert(v.at);
     const std::size_t first = work.size();
     void_points_near(packing, v.at.p, packing.radius(id) * (1 + 1e-6), {}, work);
     for (std::size_t i = work.size(); i > first + 1; --i) std::swap(work[i - 1], work[first + uniform_index(rng, i - first)]);
   }
+  detail::check_sample(packing);
   return packing;
 }
 

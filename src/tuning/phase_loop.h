@@ -8,11 +8,13 @@
 #include <chrono>
 #include <cmath>
 #include <functional>
+#include <string>
 #include <vector>
 
 #include "disktune/errors.h"
 #include "disktune/surface_tuning.h"
 #include "disktune/tuning.h"
+#include "../voids/final_check.h"
 
 namespace disktune::detail {
 
@@ -98,11 +100,34 @@ std::vector<PhasePlan<P>> plan_for(const TuneOptions& o, bool eject, bool one_ra
   return {};
 }
 
+/// The last line of defence: the tuned packing gets the exact checks once more. Should
+/// it fail them (a bug), it is put back to the closest valid state kept - before the
+/// last phase, or as tune got it - and InternalError says which check failed and where.
+template <class P>
+void check_tuned(P& packing, const P& entry, const P& before_last, Phase last) {
+  const std::string defect = packing_defect(packing);
+  if (defect.empty()) return;
+  std::string kept = "as tune got it";
+  if (packing_defect(before_last).empty()) {
+    packing = before_last;
+    kept = "as it was before that phase";
+  } else {
+    packing = entry;
+  }
+  const std::string when = last == Phase::none ? "" : " after the " + to_string(last) + " phase";
+  throw InternalError("tune: the packing" + when + " failed the final check: " + defect +
+                      ". It was put back " + kept + " (" + std::to_string(packing.size()) +
+                      " disks). " + kReportBug);
+}
+
 /// Runs the phases in order until the count is `goal` or none makes progress; `unit` is
 /// the count at area fraction 1, `after_op(packing)` (if set) runs after each operation.
+/// `entry` is the packing as tune got it (valid, before any boundary step); the result
+/// is checked by check_tuned.
 template <class P, class AfterOp>
-TuneResult run_phases(P& packing, double unit, std::size_t goal, const std::vector<PhasePlan<P>>& plans, Rng& rng,
-                      const TuneOptions& options, const AfterOp& after_op, std::chrono::steady_clock::time_point t0) {
+TuneResult run_phases(P& packing, const P& entry, double unit, std::size_t goal, const std::vector<PhasePlan<P>>& plans,
+                      Rng& rng, const TuneOptions& options, const AfterOp& after_op,
+                      std::chrono::steady_clock::time_point t0) {
   TuneResult result;
   result.target = goal;
   const bool eject = result.target < packing.size();
@@ -137,8 +162,14 @@ TuneResult run_phases(P& packing, double unit, std::size_t goal, const std::vect
     }
   };
 
+  using Clock = std::chrono::steady_clock;
+  double check_seconds = 0;
+  P before_phase = packing;  // kept for check_tuned
   for (const PhasePlan<P>& plan : plans) {
     if (missing() == 0) break;
+    const auto copy_start = Clock::now();
+    if (result.last_phase != Phase::none) before_phase = packing;
+    check_seconds += std::chrono::duration<double>(Clock::now() - copy_start).count();
     result.last_phase = plan.phase;
     if (plan.thaw) {
       for (const DiskId id : packing.ids()) packing.set_flags(id, packing.flags(id) & ~kFrozen);
@@ -153,9 +184,12 @@ TuneResult run_phases(P& packing, double unit, std::size_t goal, const std::vect
       if (gain < std::max(options.min_gain_per_sweep * static_cast<double>(before), 0.5)) break;
     }
   }
+  const auto check_start = Clock::now();
+  check_tuned(packing, entry, before_phase, result.last_phase);
+  result.check_seconds = check_seconds + std::chrono::duration<double>(Clock::now() - check_start).count();
   result.count = packing.size();
   result.reached = result.count == result.target;
-  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  result.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
   return result;
 }
 

@@ -15,12 +15,12 @@
 namespace disktune {
 namespace {
 
-// The scheduler for a domain of the given area.
-TuneResult tune_in(Packing& packing, double area, const Target& target, Rng& rng,
+// The scheduler for a domain of the given area; `entry` is the packing as tune got it.
+TuneResult tune_in(Packing& packing, const Packing& entry, double area, const Target& target, Rng& rng,
                    const TuneOptions& options, std::chrono::steady_clock::time_point t0) {
   const std::size_t goal = target_count(target, packing, area);
   const auto plans = detail::plan_for<Packing>(options, goal < packing.size(), packing.sizing() == nullptr, &angle_inject);
-  return detail::run_phases(packing, density_unit(packing, area), goal, plans, rng, options,
+  return detail::run_phases(packing, entry, density_unit(packing, area), goal, plans, rng, options,
                             options.after_operation, t0);
 }
 
@@ -30,7 +30,8 @@ TuneResult tune(Packing& packing, const PeriodicBox& box, const Target& target, 
                 const TuneOptions& options) {
   const auto t0 = std::chrono::steady_clock::now();
   if (packing.empty()) throw InvalidInput("tune: the packing is empty; sample it first");
-  return tune_in(packing, box.area(), target, rng, options, t0);
+  const Packing entry = packing;
+  return tune_in(packing, entry, box.area(), target, rng, options, t0);
 }
 
 TuneResult tune(Packing& packing, const PlanarDomain& domain, const Target& target, Rng& rng,
@@ -48,8 +49,9 @@ TuneResult tune(Packing& packing, const PlanarDomain& domain, const Target& targ
   // r / rho, rho = sqrt(eta 2 sqrt3 / pi) the target's relative radius.
   const double eta = static_cast<double>(target_count(target, packing, domain.area())) /
                      density_unit(packing, domain.area());
+  const Packing entry = packing;
   tune_boundary(packing, domain, 1 / relative_radius_for(eta), rng);
-  return tune_in(packing, domain.area(), target, rng, options, t0);
+  return tune_in(packing, entry, domain.area(), target, rng, options, t0);
 }
 
 }  // namespace disktune

@@ -112,17 +112,12 @@ void corners_in_region(const Packing& packing, Vec2 center, double R,
   }
 }
 
-void validate_packing(const Packing& packing, const std::string& what) {
+std::string packing_defect(const Packing& packing) {
   std::ostringstream msg;
-  msg << what << ": ";
-  if (packing.empty()) {
-    msg << "holds no disks";
-    throw InvalidInput(msg.str());
-  }
+  if (packing.empty()) return "holds no disks";
   if (const auto hole = uncovered_boundary_point(packing)) {
-    msg << "not maximal: the boundary point (" << hole->x << ", " << hole->y
-        << ") is covered by no disk; start from a maximal sample ('disktune sample')";
-    throw InvalidInput(msg.str());
+    msg << "not maximal: the boundary point (" << hole->x << ", " << hole->y << ") is covered by no disk";
+    return msg.str();
   }
   std::vector<Corner> corners;
   for (DiskId id = 0; id < packing.id_bound(); ++id) {
@@ -137,16 +132,24 @@ void validate_packing(const Packing& packing, const std::string& what) {
       msg << "disks at (" << c.x << ", " << c.y << ") and (" << packing.center(other).x << ", "
           << packing.center(other).y << ") are closer than "
           << (packing.sizing() ? "the smaller of their radii" : "r") << ": not a packing";
-      throw InvalidInput(msg.str());
+      return msg.str();
     }
     corners_on_circle(packing, id, corners);
     if (!corners.empty()) {
       const Vec2 hole = packing.frame().wrap(corners.front().point);
-      msg << "not maximal: the point (" << hole.x << ", " << hole.y
-          << ") is covered by no disk; start from a maximal sample ('disktune sample')";
-      throw InvalidInput(msg.str());
+      msg << "not maximal: the point (" << hole.x << ", " << hole.y << ") is covered by no disk";
+      return msg.str();
     }
   }
+  return "";
+}
+
+void validate_packing(const Packing& packing, const std::string& what) {
+  const std::string defect = packing_defect(packing);
+  if (defect.empty()) return;
+  // A hole is what a packing made by other means most often has: say how to get one.
+  const bool hole = defect.rfind("not maximal", 0) == 0;
+  throw InvalidInput(what + ": " + defect + (hole ? "; start from a maximal sample ('disktune sample')" : ""));
 }
 
 bool is_maximal(const Packing& packing) {

@@ -207,20 +207,25 @@ bool is_conflict_free(const SurfacePacking& packing) {
   return true;
 }
 
-void validate_surface_packing(const SurfacePacking& packing, const std::string& what) {
-  if (packing.empty()) throw InvalidInput(what + ": no disks");
+std::string packing_defect(const SurfacePacking& packing) {
+  if (packing.empty()) return "no disks";
   for (const DiskId i : packing.ids()) {
     if (const DiskId j = conflicting_disk(packing, i); j != kNoDisk) {
-      throw InvalidInput(what + ": the disks centered at " + detail::point_text(packing.center(i)) + " and " +
-                         detail::point_text(packing.center(j)) +
-                         " cover each other's centers (a conflict); sample the surface again");
+      return "the disks centered at " + detail::point_text(packing.center(i)) + " and " +
+             detail::point_text(packing.center(j)) + " cover each other's centers (a conflict)";
     }
   }
   if (const auto v = first_void_point(packing)) {
-    throw InvalidInput(what + ": the point " + detail::point_text(v->at.p) + " of triangle " +
-                       std::to_string(v->at.triangle) +
-                       " is covered by no disk (the packing is not maximal); sample the surface again");
+    return "the point " + detail::point_text(v->at.p) + " of triangle " + std::to_string(v->at.triangle) +
+           " is covered by no disk (the packing is not maximal)";
   }
+  return "";
+}
+
+void validate_surface_packing(const SurfacePacking& packing, const std::string& what) {
+  const std::string defect = packing_defect(packing);
+  if (defect.empty()) return;
+  throw InvalidInput(what + ": " + defect + (packing.empty() ? "" : "; sample the surface again"));
 }
 
 }  // namespace disktune
