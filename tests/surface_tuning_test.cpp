@@ -57,6 +57,24 @@ TEST(SurfaceMps, OpenBoundaryHasFixedDisksOnIt) {
   EXPECT_TRUE(surface_report(packing).boundary_ok()) << surface_report(packing).summary();
 }
 
+// Long boundary edges, hundreds of radii long: their fixed disks cover them (1D
+// maximal) and the sample passes the oracle. (One ball around a whole edge made finding
+// a long edge's gaps cost (length / r)^3 grid cells: a 10 x 0.1 plate and a triangle of
+// aspect 100 did not finish; docs/surfaces.md.)
+TEST(SurfaceMps, LongBoundaryEdges) {
+  const std::vector<Vec3> strip{{0, 0, 0}, {10, 0, 0}, {10, 0.1, 0}, {0, 0.1, 0}};
+  const std::vector<Vec3> sliver{{0, 0, 0}, {10, 0, 0}, {5, 0.1, 0}};
+  const auto plate = std::make_shared<const SurfaceDomain>(strip, std::vector<SurfaceDomain::Triangle>{{0, 1, 2}, {0, 2, 3}});
+  const auto thin = std::make_shared<const SurfaceDomain>(sliver, std::vector<SurfaceDomain::Triangle>{{0, 1, 2}});
+  for (const auto& [domain, r] : {std::pair{plate, 0.01}, std::pair{thin, 0.1}}) {
+    Rng rng(3);
+    const SurfacePacking packing = sample_surface_mps(domain, SurfaceSizing::constant(r), rng);
+    const auto report = surface_report(packing);
+    EXPECT_TRUE(report.ok()) << report.summary();
+    EXPECT_GT(report.boundary_count, static_cast<std::size_t>(9 / r));  // two edges 10 long
+  }
+}
+
 TEST(SurfaceMps, SameSeedSameSample) {
   const auto domain = surface_file("eight.off");
   Rng a(5), b(5);

@@ -8,6 +8,7 @@
 #include "disktune/errors.h"
 #include "disktune/surface_tuning.h"
 #include "disktune/surface_voids.h"
+#include "disktune/tolerance.h"
 #include "../voids/final_check.h"
 
 namespace disktune {
@@ -16,8 +17,8 @@ namespace {
 void sample_boundary(SurfacePacking& packing, Rng& rng) {
   const SurfaceDomain& d = packing.domain();
   if (d.is_closed()) return;
-  // The gaps of each boundary edge, in loop and edge order; a new disk changes only
-  // those of the edges it reaches, so only those are measured again.
+  // The gaps of each boundary edge, in loop and edge order, measured once; a new disk
+  // changes only those of the edges it reaches.
   struct Edge {
     std::size_t loop, edge;
     Vec3 a, b;
@@ -52,11 +53,21 @@ void sample_boundary(SurfacePacking& packing, Rng& rng) {
     const BoundaryGap g = *gaps[k];
     const DiskId id =
         packing.insert(packing.index().on_boundary(g.loop, g.edge, g.t0 + (g.t1 - g.t0) * uniform01(rng)), kFixed);
-    const double reach = packing.radius(id) * (1 + 1e-6);
+    // The new disk covers one interval of each edge it reaches: cut it out of the gaps
+    // there (measuring such an edge again would cost its length over r per disk).
     for (Edge& e : edges) {
-      if (distance_to_segment(packing.center(id), e.a, e.b) > reach) continue;
-      e.gaps.clear();
-      uncovered_on_boundary_edge(packing, e.loop, e.edge, true, e.gaps);
+      const auto in = segment_in_ball(e.a, e.b, packing.center(id), packing.radius(id) * (1 + kRelTol));
+      if (!in) continue;
+      std::vector<BoundaryGap> left;
+      for (const BoundaryGap& g : e.gaps) {
+        if (g.t1 <= (*in)[0] || g.t0 >= (*in)[1]) {
+          left.push_back(g);
+          continue;
+        }
+        if (g.t0 < (*in)[0]) left.push_back({g.loop, g.edge, g.t0, (*in)[0]});
+        if ((*in)[1] < g.t1) left.push_back({g.loop, g.edge, (*in)[1], g.t1});
+      }
+      e.gaps.swap(left);
     }
   }
 }

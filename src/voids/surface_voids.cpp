@@ -154,18 +154,18 @@ void uncovered_on_boundary_edge(const SurfacePacking& packing, std::size_t l, st
   const Vec3 a = v[loop[e]], b = v[loop[(e + 1) % loop.size()]], d = b - a;
   thread_local std::vector<std::array<double, 2>> covered;
   covered.clear();
-  packing.for_each_near(a + d * 0.5, 0.5 * norm(d) + packing.max_radius() * (1 + kRelTol), [&](DiskId j) {
+  // The disks reaching the edge, piece by piece: one ball around the whole edge would
+  // visit (|edge| / r)^3 grid cells. A disk found from two pieces adds its interval twice,
+  // which the union below does not mind.
+  const double length = norm(d), margin = packing.max_radius() * (1 + kRelTol);
+  const int pieces = std::max(1, static_cast<int>(std::ceil(length / (2 * packing.max_radius()))));
+  const auto add_interval = [&](DiskId j) {
     if (fixed_only && !(packing.flags(j) & kFixed)) return;
-    // |a + s d - c|^2 <= r^2 (with the coverage slack) for s in [s0, s1].
-    const Vec3 f = a - packing.center(j);
-    const double rr = packing.radius(j) * (1 + kRelTol);
-    const double A = dot(d, d), B = dot(f, d), C = dot(f, f) - rr * rr;
-    const double disc = B * B - A * C;
-    if (disc < 0) return;
-    const double root = std::sqrt(disc);
-    const double s0 = std::max(0.0, (-B - root) / A), s1 = std::min(1.0, (-B + root) / A);
-    if (s0 <= s1) covered.push_back({s0, s1});
-  });
+    if (const auto in = segment_in_ball(a, b, packing.center(j), packing.radius(j) * (1 + kRelTol)))
+      covered.push_back(*in);
+  };
+  for (int k = 0; k < pieces; ++k)
+    packing.for_each_near(a + d * ((k + 0.5) / pieces), 0.5 * length / pieces + margin, add_interval);
   std::sort(covered.begin(), covered.end());
   double reach = 0;
   for (const auto& c : covered) {
