@@ -14,6 +14,7 @@
 #include "disktune/quality_json.h"
 #include "disktune/sampling.h"
 #include "lattices.h"
+#include "test_util.h"
 
 namespace disktune {
 namespace {
@@ -152,6 +153,8 @@ TEST(Spectrum, RefusesBadInput) {
   SpectrumOptions o;
   o.window = 1;
   EXPECT_THROW(measure_spectrum(p, o), InvalidInput);
+  o.window = kMaxSpectrumWindow + 1;  // its powers alone would take gigabytes
+  EXPECT_NE(test::message_of([&] { measure_spectrum(p, o); }).find("too large"), std::string::npos);
   Frame open;
   open.periodic = false;
   Packing q(open, 0.1);

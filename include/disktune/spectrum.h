@@ -14,9 +14,12 @@
 
 namespace disktune {
 
+/// The largest window K: (2K - 1)^2 powers, about half a gigabyte at this size.
+inline constexpr int kMaxSpectrumWindow = 4096;
+
 struct SpectrumOptions {
-  /// The window |kx|, |ky| < K. 0 chooses K so that the window reaches normalised
-  /// frequency 3 along both axes, capped by `max_cost`.
+  /// The window |kx|, |ky| < K, 2 <= K <= kMaxSpectrumWindow. 0 chooses K so that the
+  /// window reaches normalised frequency 3 along both axes, capped by `max_cost`.
   int window = 0;
   /// Largest automatic cost N * K * (2K - 1) (complex multiply-adds; ~1e9 take about
   /// a second on one core). An explicit `window` is not capped.

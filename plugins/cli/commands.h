@@ -29,6 +29,12 @@ struct DomainArgs {
 };
 void add_domain_options(CLI::App* cmd, DomainArgs& domain);
 
+/// A validator for a whole number written in decimal digits only, from low to high
+/// (options.cpp); `what` names the option in the message.
+CLI::Validator whole_number(std::uint64_t low, std::uint64_t high, const std::string& what);
+/// The --seed option of sample, tune and sweep: 0 to 2^64 - 1, nothing else.
+CLI::Option* add_seed_option(CLI::App* cmd, std::uint64_t& seed);
+
 void add_sample_command(CLI::App& app, Action& action);
 void add_tune_command(CLI::App& app, Action& action);
 void add_mesh_command(CLI::App& app, Action& action);

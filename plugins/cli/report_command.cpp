@@ -117,8 +117,8 @@ void add_report_command(CLI::App& app, Action& action) {
   cmd->add_flag("--no-spectrum", args->no_spectrum, "Skip the spectrum (seconds for 1e5 disks)");
   cmd->add_option("--spectrum-window", args->spectrum_window,
                   "Spectrum frequencies |kx|, |ky| < K (default: reach normalised frequency 3, "
-                  "capped at N K (2K-1) <= 1e10)")
-      ->check(CLI::NonNegativeNumber);
+                  "capped at N K (2K-1) <= 1e10); at most 4096")
+      ->check(whole_number(0, kMaxSpectrumWindow, "--spectrum-window"));
   cmd->callback([args, &action] { action = [args] { return run_report(*args); }; });
 }
 

@@ -66,8 +66,7 @@ void add_sample_command(CLI::App& app, Action& action) {
   CLI::App* cmd = app.add_subcommand(
       "sample", "Make a maximal Poisson-disk sample (MPS) and write it as CSV (x,y,r).");
   add_domain_options(cmd, job->domain);
-  cmd->add_option("--seed", job->seed, "Random seed; the same seed gives the same output")
-      ->capture_default_str();
+  add_seed_option(cmd, job->seed);
   cmd->add_option("--output,-o", job->output, "CSV file to write (header x,y,r; x,y,z,r on a surface)");
   cmd->add_option("--svg", job->svg, "Also draw the packing as an SVG picture (not on a surface)");
   cmd->callback([job, &action] { action = [job] { return run_sample(*job); }; });

@@ -149,7 +149,7 @@ void add_sweep_command(CLI::App& app, Action& action) {
   cmd->add_option("--cvt-iterations", args->cvt_iterations, "Most Lloyd iterations of the CVT")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
-  cmd->add_option("--seed", args->seed, "Random seed")->capture_default_str();
+  add_seed_option(cmd, args->seed);
   cmd->add_option("--output,-o", args->output, "Also write the table to this Markdown file");
   cmd->callback([args, &action] { action = [args] { return run_sweep(*args); }; });
 }

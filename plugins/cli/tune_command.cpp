@@ -110,7 +110,8 @@ void add_tune_command(CLI::App& app, Action& action) {
       "Tune a maximal packing to exactly the number of disks asked for: disk injection to go "
       "denser, disk ejection to go sparser.");
   add_domain_options(cmd, args->domain);
-  auto* count = cmd->add_option("--target-count", args->target_count, "Exact number of disks wanted");
+  auto* count = cmd->add_option("--target-count", args->target_count, "Exact number of disks wanted")
+                    ->check(whole_number(1, UINT64_MAX, "--target-count"));
   auto* fraction = cmd->add_option("--target-fraction", args->target_fraction,
                                    "Area fraction eta = N pi (r/2)^2 / A wanted (MPS ~0.547, hex 0.9069)");
   auto* rho = cmd->add_option("--target-rho", args->target_rho,
@@ -130,8 +131,7 @@ void add_tune_command(CLI::App& app, Action& action) {
   cmd->add_option("--input,-i", args->input,
                   "Start from this CSV (x,y,r, or x,y,z,r on a surface; a conflict-free maximal "
                   "packing) instead of a new MPS");
-  cmd->add_option("--seed", args->seed, "Random seed; the same seed gives the same output")
-      ->capture_default_str();
+  add_seed_option(cmd, args->seed);
   cmd->add_option("--output,-o", args->output, "CSV file to write (header x,y,r; x,y,z,r on a surface)");
   cmd->add_option("--svg", args->svg, "Also draw the packing (frozen crystal disks in blue)");
   cmd->callback([args, cmd, &action] {

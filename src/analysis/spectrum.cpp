@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <string>
 #include <thread>
 
 #include "disktune/errors.h"
@@ -180,6 +181,11 @@ Spectrum measure_spectrum(const Packing& packing, const SpectrumOptions& options
     msg << "spectrum window " << options.window
         << " is too small: give 2 or more (frequencies |kx|, |ky| < K), or 0 for automatic";
     throw InvalidInput(msg.str());
+  }
+  if (options.window > kMaxSpectrumWindow) {
+    throw InvalidInput("spectrum window " + std::to_string(options.window) + " is too large: its " +
+                       std::to_string(2 * options.window - 1) + "^2 powers would not fit in memory; give at most " +
+                       std::to_string(kMaxSpectrumWindow) + ", or 0 for automatic");
   }
   Spectrum s;
   s.count = packing.size();
