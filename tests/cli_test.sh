@@ -71,6 +71,14 @@ expect tune-not-reached 4 "NOT reached" -- "$bin" tune --radius 0.03 --target-fr
 expect tune-two-targets 2 "excludes" -- "$bin" tune --radius 0.03 --target-count 900 --target-rho 0.9
 expect tune-no-target 2 "give one target" -- "$bin" tune --radius 0.03
 expect tune-too-dense 2 "densest packing" -- "$bin" tune --radius 0.03 --target-count 5000
+# Whole numbers are checked as text: CLI11 alone wraps -1 and 2^64 into a seed (#17).
+expect tune-negative-count 2 "--target-count must be a whole number from 1" -- "$bin" tune --radius 0.03 --target-count -5
+expect tune-zero-count 2 "--target-count 0 is out of range" -- "$bin" tune --radius 0.03 --target-count 0
+expect seed-negative 2 "--seed must be a whole number from 0 to 18446744073709551615" -- "$bin" sample --radius 0.05 --seed -1
+expect seed-too-big 2 "--seed 18446744073709551616 is out of range" -- "$bin" sample --radius 0.05 --seed 18446744073709551616
+expect seed-float 2 "--seed must be a whole number" -- "$bin" sample --radius 0.05 --seed 1e23
+expect seed-largest 0 "^sample: " -- "$bin" sample --radius 0.05 --seed 18446744073709551615
+expect spectrum-window-too-big 2 "--spectrum-window 20000 is out of range: give 0 to 4096" -- "$bin" report a.csv --radius 0.05 --spectrum-window 20000
 expect tune-eject 0 "-> [0-9]+ disks .*reached.*eta = 0\.40[0-9]*, " -- "$bin" tune --radius 0.03 --target-fraction 0.40
 expect tune-sift 0 "reached" -- "$bin" tune --radius 0.03 --target-fraction 0.50 --method sift
 expect tune-eject-wrong-method 2 "use an ejection method" -- "$bin" tune --radius 0.03 --target-fraction 0.40 --method void
