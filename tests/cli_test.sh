@@ -227,6 +227,24 @@ absent surface-quad-output never.csv
 printf 'OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0.3\n0 -1 0.2\n0 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n' >fin.off
 expect surface-non-manifold 2 "fin\.off: the edge between vertex 0 .* and vertex 1 .* lies in 3 triangles" -- "$bin" sample --domain fin.off --radius 0.1 --output never.csv
 absent surface-non-manifold-output never.csv
+# hostile mesh files (#17): exit 2 naming the file and the line, fast (CGAL's reader
+# crashed on the PLY and allocated gigabytes for the counts)
+printf 'ply\nformat ascii 1.0\nproperty float x\nend_header\n' >early.ply
+expect mesh-ply-property-first 2 "early\.ply, line 3: the property 'x' comes before any element" -- timeout 20 "$bin" sample --domain early.ply --radius 0.1 --output never.csv
+absent mesh-ply-property-first-output never.csv
+printf 'OFF\n3 200000000 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n' >manyfaces.off
+expect mesh-off-face-count 2 "manyfaces\.off, line 2: the header promises 3 vertices and 200000000 faces" -- timeout 20 "$bin" sample --domain manyfaces.off --radius 0.1 --output never.csv
+printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n200000000 0 1 2\n' >corners.off
+expect mesh-off-corner-count 2 "corners\.off, line 6: face 0 declares 200000000 corners" -- timeout 20 "$bin" sample --domain corners.off --radius 0.1 --output never.csv
+printf 'ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty list int int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n200000000 0 1 2\n' >list.ply
+expect mesh-ply-list-count 2 "list\.ply, line 13: face 0: the list 'vertex_indices' claims 200000000 entries" -- timeout 20 "$bin" sample --domain list.ply --radius 0.1 --output never.csv
+printf 'v 0 0 0\nv 1 nan 0\nv 0 1 0\nf 1 2 3\n' >nan.obj
+expect mesh-obj-nan 2 "nan\.obj, line 2: vertex 1 \(OBJ index 2\): 'nan' is not a finite number" -- "$bin" sample --domain nan.obj --radius 0.1 --output never.csv
+printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n' >index.off
+expect mesh-off-index 2 "index\.off, line 6: face 0 names vertex 3, but the file has 3 vertices" -- "$bin" sample --domain index.off --radius 0.1 --output never.csv
+printf 'solid \000\001\377garbage' >garbage.stl
+expect mesh-stl-garbage 2 "garbage\.stl: 16 bytes, too short for a binary STL" -- "$bin" sample --domain garbage.stl --radius 0.1 --output never.csv
+absent mesh-hostile-output never.csv
 expect surface-svg 2 "cannot show disks on a curved surface" -- "$bin" sample --domain "$eight" --radius 0.045 --output never.csv --svg never.svg
 absent surface-svg-output never.csv
 absent surface-svg-picture never.svg

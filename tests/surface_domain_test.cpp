@@ -139,7 +139,7 @@ TEST(SurfaceDomainData, MeshWithBorderHasBoundaryLoops) {
 const char* tetrahedron_off =
     "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n";
 
-TEST(SurfaceDomainRead, OffStartingWithACommentReadsThroughCgal) {
+TEST(SurfaceDomainRead, OffStartingWithACommentReadsWithReadSurfaceNotOpenMesh) {
   TempDir dir;
   write(dir.file("t.off"), std::string("# a tetrahedron\n") + tetrahedron_off);
   const SurfaceDomain s = read_surface(dir.file("t.off"));

@@ -57,12 +57,13 @@ class SurfaceDomain {
   double area_ = 0;
 };
 
-/// A surface from a mesh file (.off, .obj, .ply, .stl, by extension) read through CGAL.
-/// OFF files may start with '#' comments. STL files repeat each corner per facet, so
-/// points with equal coordinates are merged first. Faces are then turned, component by
-/// component, to agree with the first triangle's orientation where that is possible.
-/// Throws IoError when the file cannot be read and InvalidInput when it is no valid
-/// surface (see the constructor).
+/// A surface from a mesh file (.off, .obj, .ply, .stl, by extension), read by disktune's
+/// own validating readers (the soup CGAL 5.5's readers give for valid files). OFF files
+/// may start with '#' comments. STL corners with equal coordinates are merged. Faces are
+/// then turned, component by component, to agree with the first triangle's orientation
+/// where that is possible. Throws IoError when the file cannot be opened or read, and
+/// InvalidInput, naming the file and the line (or the vertex or face), when it is
+/// malformed or no valid surface (see the constructor).
 SurfaceDomain read_surface(const std::string& path);
 
 /// The same through OpenMesh's readers (OpenMesh::IO::read_mesh), without reorienting

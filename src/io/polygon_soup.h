@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Internal: a polygon soup read by CGAL's readers (OFF, OBJ, STL, PLY, ...), handed on
-// in plain types so CGAL's IO templates compile in one translation unit only.
+// Internal: the points and polygons of a mesh file (OFF, OBJ, PLY, STL), in plain types.
+// disktune's own readers (off_reader.h, obj_reader.h, ply_reader.h, stl_reader.h) read
+// what CGAL 5.5's readers read, to the same soup, but check the file as they go (#17).
 #pragma once
 
 #include <array>
@@ -15,8 +16,11 @@ struct PolygonSoup {
   std::vector<std::vector<std::size_t>> polygons;
 };
 
-/// The points and polygons of a mesh file, chosen by extension. Throws IoError when the
-/// file cannot be opened or parsed.
+/// The points and polygons of a mesh file, its format chosen by the extension (.off,
+/// .obj, .ply, .stl, any letter case). Every polygon has 3 or more corners, every index
+/// names a point, every coordinate is finite. Throws IoError when the file cannot be
+/// opened or read, and InvalidInput, naming the file and the line (text) or the vertex
+/// or face, when its content is wrong.
 PolygonSoup read_polygon_soup(const std::string& path);
 
 }  // namespace disktune::detail
