@@ -163,13 +163,15 @@ TuneResult run_phases(P& packing, const P& entry, double unit, std::size_t goal,
   };
 
   using Clock = std::chrono::steady_clock;
-  double check_seconds = 0;
+  const auto since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
+  const auto first_copy = Clock::now();
   P before_phase = packing;  // kept for check_tuned
+  double check_seconds = since(first_copy);
   for (const PhasePlan<P>& plan : plans) {
     if (missing() == 0) break;
     const auto copy_start = Clock::now();
     if (result.last_phase != Phase::none) before_phase = packing;
-    check_seconds += std::chrono::duration<double>(Clock::now() - copy_start).count();
+    check_seconds += since(copy_start);
     result.last_phase = plan.phase;
     if (plan.thaw) {
       for (const DiskId id : packing.ids()) packing.set_flags(id, packing.flags(id) & ~kFrozen);
@@ -186,10 +188,10 @@ TuneResult run_phases(P& packing, const P& entry, double unit, std::size_t goal,
   }
   const auto check_start = Clock::now();
   check_tuned(packing, entry, before_phase, result.last_phase);
-  result.check_seconds = check_seconds + std::chrono::duration<double>(Clock::now() - check_start).count();
+  result.check_seconds = check_seconds + since(check_start);
   result.count = packing.size();
   result.reached = result.count == result.target;
-  result.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+  result.seconds = since(t0);
   return result;
 }
 
