@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "delaunay_floor.h"
+#include "disktune/errors.h"
 #include "disktune/restricted_delaunay.h"
 #include "disktune/surface_tuning.h"
 #include "disktune/surface_voids.h"
@@ -30,8 +31,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
-
-struct OverBudget {};
 
 struct Row {
   std::size_t disks = 0;
@@ -46,9 +45,7 @@ double tune_seconds(const SurfacePacking& mps, double factor, double budget, std
   Rng rng(7);
   TuneOptions options;
   const auto t0 = Clock::now();
-  options.on_progress = [&](const Progress&) {
-    if (since(t0) > budget) throw OverBudget{};
-  };
+  options.on_progress = [&](const Progress&) { return since(t0) <= budget; };  // false: cancel
   try {
     const TuneResult res = tune(packing, Target::count(goal), rng, options);
     if (!res.reached) notes += " x" + std::to_string(factor).substr(0, 3) + " stopped at " + std::to_string(res.count);
@@ -58,7 +55,7 @@ double tune_seconds(const SurfacePacking& mps, double factor, double budget, std
                   100 * res.check_seconds / seconds);
     notes += check;
     return seconds;
-  } catch (const OverBudget&) {
+  } catch (const Cancelled&) {
     return -since(t0);
   }
 }

@@ -71,6 +71,7 @@ int main(int argc, char** argv) {
       reached.push_back({std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), p});
       ++next;
     }
+    return true;
   };
   const TuneResult res = tune(packing, box, Target::area_fraction(etas.back()), rng, options);
   options.on_progress({res.count, area_fraction(res.count, r, 1.0), res.last_phase});

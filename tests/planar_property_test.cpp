@@ -283,7 +283,7 @@ void run_combination(const Scene& s, const Radii& radii, const Packing& mps, std
   Rng rng(1000 * seed + static_cast<std::uint64_t>(std::lround(100 * fraction)));
   TuneOptions opt;
   Phase phase = Phase::none;  // the phase the scheduler last reported
-  opt.on_progress = [&](const Progress& progress) { phase = progress.phase; };
+  opt.on_progress = [&](const Progress& progress) { return phase = progress.phase, true; };
   std::size_t operation = 0;  // operations that changed the packing
   std::vector<std::array<double, 4>> last = state_of(p);
   if (every_operation) {

@@ -21,4 +21,15 @@ std::size_t count_for_area_fraction(double eta, double r, double area);
 /// The disk count whose relative radius is closest to `rho`.
 std::size_t count_for_relative_radius(double rho, double r, double area);
 
+/// The area fraction of a maximal Poisson-disk sample, measured in the periodic box
+/// (docs/benchmarks.md); planar domains and surfaces come close to it.
+constexpr double kMpsAreaFraction = 0.5474;
+
+/// The radius at which `count` disks make area fraction `eta` in a domain of this area
+/// (sqrt(4 A eta / (pi count))): with the default, the radius whose maximal Poisson-disk
+/// sample has about `count` disks; with a target's eta, the radius at which tuning to
+/// that eta gives `count` disks. Throws InvalidInput unless count >= 1, the area is
+/// finite and positive and 0 < eta <= pi / (2 sqrt 3) (the hexagonal packing).
+double radius_for_count(std::size_t count, double area, double eta = kMpsAreaFraction);
+
 }  // namespace disktune

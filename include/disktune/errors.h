@@ -29,4 +29,10 @@ struct InternalError : Error {
   using Error::Error;
 };
 
+/// A long operation was stopped by its caller (a progress callback returned false).
+/// The operation left what it worked on as it was before it started.
+struct Cancelled : Error {
+  using Error::Error;
+};
+
 }  // namespace disktune

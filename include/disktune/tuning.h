@@ -93,8 +93,9 @@ struct TuneOptions {
   double min_gain_per_sweep = 2e-4;
   /// Upper bound on sweeps in one phase, so a run always ends.
   int max_sweeps_per_phase = 200;
-  /// Called now and then (after each sweep, and each 1/64 of a sweep).
-  std::function<void(const Progress&)> on_progress;
+  /// Called now and then (after each sweep, and each 1/64 of a sweep). Returning false
+  /// cancels: tune then puts the packing back as it got it and throws Cancelled.
+  std::function<bool(const Progress&)> on_progress;
   /// Called after every single operation that changed the packing (for tests: slow).
   std::function<void(const Packing&)> after_operation;
   /// The same for tuning on a surface (surface_tuning.h).
@@ -116,7 +117,9 @@ struct TuneResult {
 /// Moves, adds and removes disks of `packing` (uniform radius, conflict-free and
 /// maximal on entry) until it has exactly the target count, or no phase makes progress
 /// any more (then `reached` is false and the packing is the closest it got). Every
-/// intermediate state between operations is conflict-free and maximal.
+/// intermediate state between operations is conflict-free and maximal. A transaction:
+/// when anything throws on the way (a cancel, an error from a callback, running out of
+/// memory), the packing is put back as tune got it before the exception goes on.
 TuneResult tune(Packing& packing, const PeriodicBox& box, const Target& target, Rng& rng,
                 const TuneOptions& options = {});
 
@@ -136,8 +139,9 @@ TuneResult tune(Packing& packing, const PlanarDomain& domain, const Target& targ
 /// inject at the diameter corner of what is left while anything is left.
 std::size_t void_inject(Packing& packing, DiskId p, Rng& rng, std::size_t max_added);
 
-/// Repeller injection (2.2): move each neighbour of p to its void corner farthest from
-/// p until a gap opens, inject there; otherwise void-inject p.
+/// Repeller injection (2.2): move each neighbour of p to the corner of its void of
+/// largest weighted distance |c - p| - r(c) from p (6.1.2) until a gap opens, inject
+/// there; otherwise void-inject p.
 std::size_t repeller_inject(Packing& packing, DiskId p, Rng& rng, std::size_t max_added);
 
 /// The repeller step alone, around any point: the disks within 2r of `point` (except

@@ -74,6 +74,7 @@ TuneResult tune_with_progress(std::size_t start, std::size_t target, Method meth
     std::snprintf(status, sizeof status, "%zu/%zu disks, eta %.4f, %s", p.count, target,
                   p.area_fraction, to_string(p.phase).c_str());
     bar.update(static_cast<double>(p.count) - start, static_cast<double>(target) - start, status);
+    return true;
   };
   try {
     const TuneResult res = run(options);

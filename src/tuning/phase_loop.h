@@ -137,7 +137,9 @@ TuneResult run_phases(P& packing, const P& entry, double unit, std::size_t goal,
   };
   auto eta = [&] { return static_cast<double>(packing.size()) / unit; };
   auto report = [&](Phase phase) {
-    if (options.on_progress) options.on_progress({packing.size(), eta(), phase});
+    if (options.on_progress && !options.on_progress({packing.size(), eta(), phase})) {
+      throw Cancelled("tune: cancelled by the progress callback; the packing is as tune got it");
+    }
   };
 
   // One sweep of a phase: a whole-packing sweep, or its operation on every disk in

@@ -11,6 +11,7 @@
 #include "disktune/errors.h"
 #include "disktune/tuning.h"
 #include "phase_loop.h"
+#include "transaction.h"
 
 namespace disktune {
 namespace {
@@ -30,8 +31,9 @@ TuneResult tune(Packing& packing, const PeriodicBox& box, const Target& target, 
                 const TuneOptions& options) {
   const auto t0 = std::chrono::steady_clock::now();
   if (packing.empty()) throw InvalidInput("tune: the packing is empty; sample it first");
-  const Packing entry = packing;
-  return tune_in(packing, entry, box.area(), target, rng, options, t0);
+  return detail::as_transaction(packing, [&](const Packing& entry) {
+    return tune_in(packing, entry, box.area(), target, rng, options, t0);
+  });
 }
 
 TuneResult tune(Packing& packing, const PlanarDomain& domain, const Target& target, Rng& rng,
@@ -49,9 +51,10 @@ TuneResult tune(Packing& packing, const PlanarDomain& domain, const Target& targ
   // r / rho, rho = sqrt(eta 2 sqrt3 / pi) the target's relative radius.
   const double eta = static_cast<double>(target_count(target, packing, domain.area())) /
                      density_unit(packing, domain.area());
-  const Packing entry = packing;
-  tune_boundary(packing, domain, 1 / relative_radius_for(eta), rng);
-  return tune_in(packing, entry, domain.area(), target, rng, options, t0);
+  return detail::as_transaction(packing, [&](const Packing& entry) {
+    tune_boundary(packing, domain, 1 / relative_radius_for(eta), rng);
+    return tune_in(packing, entry, domain.area(), target, rng, options, t0);
+  });
 }
 
 }  // namespace disktune

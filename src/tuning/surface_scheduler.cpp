@@ -7,6 +7,7 @@
 #include "disktune/errors.h"
 #include "disktune/surface_tuning.h"
 #include "phase_loop.h"
+#include "transaction.h"
 
 namespace disktune {
 
@@ -43,10 +44,11 @@ TuneResult tune(SurfacePacking& packing, const Target& target, Rng& rng, const T
                                                       packing.sizing().is_constant(), nullptr, true);
   // The boundary first, at the spacing of a hexagonal packing of the target's count.
   const double eta = static_cast<double>(goal) / unit;
-  const SurfacePacking entry = packing;
-  respace_surface_boundary(packing, 1 / relative_radius_for(eta), rng);
-  if (options.after_surface_operation) options.after_surface_operation(packing);
-  return detail::run_phases(packing, entry, unit, goal, plans, rng, options, options.after_surface_operation, t0);
+  return detail::as_transaction(packing, [&](const SurfacePacking& entry) {
+    respace_surface_boundary(packing, 1 / relative_radius_for(eta), rng);
+    if (options.after_surface_operation) options.after_surface_operation(packing);
+    return detail::run_phases(packing, entry, unit, goal, plans, rng, options, options.after_surface_operation, t0);
+  });
 }
 
 }  // namespace disktune

@@ -1,0 +1,48 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The mesh-improvement stage in one call: a triangulated surface in, a new mesh of the
+// same surface out with exactly the number of vertices asked for, its vertices a tuned
+// maximal random packing (conflict-free and maximal) and its triangles their restricted
+// Delaunay triangulation. Adapters to CGAL and OpenMesh meshes are in
+// disktune/cgal/remesh.h and disktune/openmesh/remesh.h.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+
+#include "disktune/surface_domain.h"
+#include "disktune/surface_mesh.h"
+#include "disktune/tuning.h"
+
+namespace disktune {
+
+struct RemeshOptions {
+  /// The density the vertices end at: the radius is the one at which `vertex_count`
+  /// disks make this area fraction (radius_for_count), so a maximal sample (about
+  /// 0.547) is tuned up to it by injection (or down, below 0.547, by ejection).
+  double area_fraction = 0.70;
+  std::uint64_t seed = 1;
+  /// The tuning's schedule, and a progress callback that can cancel.
+  TuneOptions tune;
+};
+
+struct RemeshResult {
+  /// Exactly the vertex count asked for when `tuning.reached` (vertex i is disk i); a
+  /// vertex in no triangle is possible where the samples are too sparse: see `check`.
+  SurfaceMesh mesh;
+  /// Manifold? Genus (compare with the input's)? Isolated vertices?
+  SurfaceMeshCheck check;
+  double radius = 0;  // the conflict radius: vertices at least this far apart
+  TuneResult tuning;
+};
+
+/// Samples `surface` at the radius for `vertex_count` vertices, tunes the count to
+/// exactly that and meshes the result. Same seed, same mesh. Throws InvalidInput for
+/// fewer than 4 vertices, an area fraction outside (0, 0.9069], or more vertices than
+/// memory can hold; Cancelled when the progress callback cancels.
+RemeshResult remesh(std::shared_ptr<const SurfaceDomain> surface, std::size_t vertex_count,
+                    const RemeshOptions& options = {});
+/// The same on a copy of `surface`.
+RemeshResult remesh(const SurfaceDomain& surface, std::size_t vertex_count, const RemeshOptions& options = {});
+
+}  // namespace disktune

@@ -1,0 +1,241 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The library as a mesh generator uses it: the umbrella header, radius_for_count,
+// remesh to an exact vertex count (judged by the independent surface oracle), tune as
+// a transaction (cancelled or failing, the packing is as it was), and the CGAL and
+// OpenMesh adapters.
+#include <gtest/gtest.h>
+
+// OpenMesh's PropertyT::push_back copies a default point it leaves uninitialized.
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/orientation.h>
+#include <CGAL/Surface_mesh.h>
+#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+
+#include <cmath>
+#include <stdexcept>
+#include <tuple>
+#include <vector>
+
+#include "disktune/cgal/mesh_output.h"
+#include "disktune/cgal/remesh.h"
+#include "disktune/disktune.h"
+#include "disktune/openmesh/remesh.h"
+#include "surface_checks.h"
+#include "test_util.h"
+
+namespace disktune {
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using CgalMesh = CGAL::Surface_mesh<Kernel::Point_3>;
+using OpenMeshMesh = OpenMesh::TriMesh_ArrayKernelT<>;
+
+// Everything that makes a packing's state: ids, centers, radii, flags.
+template <class P>
+std::vector<std::tuple<DiskId, double, double, double, double, int>> state_of(const P& packing) {
+  std::vector<std::tuple<DiskId, double, double, double, double, int>> out;
+  for (const DiskId id : packing.ids()) {
+    double z = 0;
+    if constexpr (std::is_same_v<P, SurfacePacking>) z = packing.center(id).z;
+    out.emplace_back(id, packing.center(id).x, packing.center(id).y, z, packing.radius(id), packing.flags(id));
+  }
+  return out;
+}
+
+TEST(RadiusForCount, AMaximalSampleAtThatRadiusHasAboutTheCount) {
+  const PeriodicBox box(1.0, 1.0);
+  for (const std::size_t n : {2000u, 20000u}) {
+    Rng rng(n);
+    const Packing mps = sample_mps(box, radius_for_count(n, box.area()), rng);
+    EXPECT_NEAR(static_cast<double>(mps.size()) / n, 1.0, 0.02) << n;
+  }
+  const auto elephant = test::surface_file("elephant.off");
+  for (const std::size_t n : {2000u, 8000u}) {
+    Rng rng(n);
+    const SurfacePacking mps =
+        sample_surface_mps(elephant, SurfaceSizing::constant(radius_for_count(n, elephant->area())), rng);
+    EXPECT_NEAR(static_cast<double>(mps.size()) / n, 1.0, 0.05) << n;
+  }
+}
+
+TEST(RadiusForCount, AtATargetsAreaFractionTuningGivesTheCount) {
+  const double r = radius_for_count(5000, 2.0, 0.8);
+  EXPECT_EQ(count_for_area_fraction(0.8, r, 2.0), 5000u);
+  EXPECT_EQ(target_count(Target::area_fraction(0.8), r, 2.0), 5000u);
+}
+
+TEST(RadiusForCount, RefusesNonsense) {
+  EXPECT_THROW(radius_for_count(0, 1.0), InvalidInput);
+  EXPECT_THROW(radius_for_count(10, -1.0), InvalidInput);
+  EXPECT_THROW(radius_for_count(10, std::nan("")), InvalidInput);
+  EXPECT_THROW(radius_for_count(10, 1.0, 0.95), InvalidInput);
+  EXPECT_THROW(radius_for_count(10, 1.0, 0.0), InvalidInput);
+}
+
+TEST(Remesh, GivesExactlyTheVertexCountAsAConflictFreeMaximalPacking) {
+  const auto elephant = test::surface_file("elephant.off");
+  for (const std::size_t n : {1500u, 4000u}) {
+    RemeshOptions options;
+    options.seed = n;
+    const RemeshResult result = remesh(elephant, n, options);
+    ASSERT_TRUE(result.tuning.reached) << n;
+    ASSERT_EQ(result.mesh.vertices.size(), n);
+    EXPECT_GT(result.mesh.triangles.size(), n);
+    // The vertices, judged as a packing of radius result.radius by the oracle.
+    std::vector<oracle::Point3> centers;
+    for (const Vec3 v : result.mesh.vertices) centers.push_back({v.x, v.y, v.z});
+    const oracle::SurfaceReport report =
+        oracle::check_surface(test::oracle_surface(*elephant), centers, result.radius);
+    EXPECT_TRUE(report.ok()) << report.summary();
+    // And the area fraction asked for, with `n` disks of that radius.
+    EXPECT_NEAR(area_fraction(n, result.radius, elephant->area()), options.area_fraction, 1e-9);
+    // Every triangle names three distinct existing vertices.
+    for (const auto& t : result.mesh.triangles) {
+      for (const auto v : t) ASSERT_LT(v, n);
+      EXPECT_TRUE(t[0] != t[1] && t[1] != t[2] && t[0] != t[2]);
+    }
+  }
+}
+
+TEST(Remesh, SameSeedSameMeshOtherSeedOtherMesh) {
+  const auto sphere = test::surface_file("sphere.off");
+  RemeshOptions options;
+  options.seed = 5;
+  const RemeshResult a = remesh(sphere, 600, options), b = remesh(sphere, 600, options);
+  ASSERT_EQ(a.mesh.vertices.size(), b.mesh.vertices.size());
+  for (std::size_t i = 0; i < a.mesh.vertices.size(); ++i) {
+    EXPECT_EQ(a.mesh.vertices[i].x, b.mesh.vertices[i].x);
+    EXPECT_EQ(a.mesh.vertices[i].z, b.mesh.vertices[i].z);
+  }
+  EXPECT_EQ(a.mesh.triangles, b.mesh.triangles);
+  options.seed = 6;
+  const RemeshResult c = remesh(sphere, 600, options);
+  EXPECT_NE(a.mesh.vertices[0].x, c.mesh.vertices[0].x);
+}
+
+TEST(Remesh, RefusesTooFewOrTooManyVerticesAndABadAreaFraction) {
+  const auto sphere = test::surface_file("sphere.off");
+  EXPECT_NE(test::message_of([&] { remesh(sphere, 3); }).find("at least 4 vertices"), std::string::npos);
+  EXPECT_NE(test::message_of([&] { remesh(sphere, std::size_t{1} << 40); }).find("too many"), std::string::npos);
+  RemeshOptions options;
+  options.area_fraction = 0.95;
+  EXPECT_THROW(remesh(sphere, 100, options), InvalidInput);
+}
+
+TEST(Transaction, ACancelledTuneLeavesThePeriodicPackingAsItWas) {
+  const PeriodicBox box(1.0, 1.0);
+  Rng rng(3);
+  Packing packing = sample_mps(box, 0.02, rng);
+  const auto before = state_of(packing);
+  TuneOptions options;
+  int calls = 0;
+  options.on_progress = [&](const Progress&) { return ++calls < 5; };
+  EXPECT_THROW(tune(packing, box, Target::area_fraction(0.85), rng, options), Cancelled);
+  EXPECT_EQ(calls, 5);
+  EXPECT_EQ(state_of(packing), before);
+  // And it still tunes afterwards: nothing was left half-done.
+  options.on_progress = nullptr;
+  EXPECT_TRUE(tune(packing, box, Target::area_fraction(0.7), rng, options).reached);
+  const oracle::Report report = oracle::check_all(test::box_of(box), 0.02, test::centers_of(packing));
+  EXPECT_TRUE(report.conflict_free() && report.maximal()) << report.summary();
+}
+
+TEST(Transaction, AnExceptionFromACallbackLeavesThePlanarPackingAsItWas) {
+  const auto domain = std::make_shared<const PlanarDomain>(
+      read_poly(std::string(DISKTUNE_DATA_DIR) + "/domains/square_with_hole.poly"));
+  Rng rng(4);
+  Packing packing = sample_mps(domain, 0.03, rng);
+  const auto before = state_of(packing);
+  TuneOptions options;
+  int operations = 0;
+  options.after_operation = [&](const Packing&) {
+    if (++operations == 40) throw std::runtime_error("from the callback");
+  };
+  EXPECT_THROW(tune(packing, *domain, Target::area_fraction(0.3), rng, options), std::runtime_error);
+  EXPECT_EQ(state_of(packing), before);
+}
+
+TEST(Transaction, ACancelledSurfaceTuneLeavesThePackingAsItWas) {
+  const auto sphere = test::surface_file("sphere.off");
+  Rng rng(5);
+  SurfacePacking packing = sample_surface_mps(sphere, SurfaceSizing::constant(0.08), rng);
+  const auto before = state_of(packing);
+  TuneOptions options;
+  int calls = 0;
+  options.on_progress = [&](const Progress&) { return ++calls < 3; };
+  EXPECT_THROW(tune(packing, Target::count(packing.size() * 13 / 10), rng, options), Cancelled);
+  EXPECT_EQ(state_of(packing), before);
+  RemeshOptions remesh_options;
+  remesh_options.tune.on_progress = [](const Progress&) { return false; };
+  EXPECT_THROW(remesh(sphere, 500, remesh_options), Cancelled);
+}
+
+TEST(Adapters, RemeshACgalSurfaceMeshIntoAnother) {
+  const SurfaceDomain sphere = read_surface(std::string(DISKTUNE_DATA_DIR) + "/surfaces/sphere.off");
+  CgalMesh in;
+  std::vector<CgalMesh::Vertex_index> v;
+  for (const Vec3 p : sphere.vertices()) v.push_back(in.add_vertex({p.x, p.y, p.z}));
+  for (const auto& t : sphere.triangles()) in.add_face(v[t[0]], v[t[1]], v[t[2]]);
+  CgalMesh out;
+  const RemeshResult result = remesh(in, 700, out);
+  EXPECT_EQ(out.number_of_vertices(), 700u);
+  EXPECT_EQ(out.number_of_faces(), result.mesh.triangles.size());
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(out));
+  EXPECT_TRUE(CGAL::is_closed(out));
+  // The vertices are the mesh's, in order.
+  for (std::size_t i = 0; i < 700; ++i) {
+    const auto p = out.point(CgalMesh::Vertex_index(static_cast<CgalMesh::size_type>(i)));
+    EXPECT_EQ(p.x(), result.mesh.vertices[i].x);
+  }
+  // In place: `out` may be `in`.
+  remesh(in, 400, in);
+  EXPECT_EQ(in.number_of_vertices(), 400u);
+}
+
+TEST(Adapters, RemeshAnOpenMeshMeshIntoAnother) {
+  const SurfaceDomain sphere = read_surface(std::string(DISKTUNE_DATA_DIR) + "/surfaces/sphere.off");
+  OpenMeshMesh in;
+  std::vector<OpenMeshMesh::VertexHandle> v;
+  for (const Vec3 p : sphere.vertices())
+    v.push_back(in.add_vertex(OpenMeshMesh::Point(static_cast<float>(p.x), static_cast<float>(p.y),
+                                                  static_cast<float>(p.z))));
+  for (const auto& t : sphere.triangles()) in.add_face(v[t[0]], v[t[1]], v[t[2]]);
+  OpenMeshMesh out;
+  const RemeshResult result = remesh(in, 650, out);
+  EXPECT_EQ(out.n_vertices(), 650u);
+  EXPECT_EQ(out.n_faces(), result.mesh.triangles.size());
+  for (const auto e : out.edges()) EXPECT_FALSE(out.is_boundary(e));  // closed, like the sphere
+}
+
+TEST(Adapters, ANonManifoldMeshIsRefusedAndTheTargetKept) {
+  SurfaceMesh fin;  // three triangles on one edge
+  fin.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}};
+  fin.triangles = {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}};
+  CgalMesh cgal_out;
+  cgal_out.add_vertex({7, 7, 7});
+  EXPECT_NE(test::message_of([&] { copy_into(fin, cgal_out); }).find("not a manifold"), std::string::npos);
+  EXPECT_EQ(cgal_out.number_of_vertices(), 1u);
+  OpenMeshMesh om_out;
+  om_out.add_vertex({7, 7, 7});
+  EXPECT_THROW(copy_into(fin, om_out), InvalidInput);
+  EXPECT_EQ(om_out.n_vertices(), 1u);
+}
+
+TEST(Adapters, APlanarMeshIntoTwoAndThreeDimensionalSurfaceMeshes) {
+  PlanarMesh square;
+  square.vertices = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  square.triangles = {{0, 1, 2}, {0, 2, 3}};
+  CGAL::Surface_mesh<Kernel::Point_2> flat;
+  copy_into(square, flat);
+  EXPECT_EQ(flat.number_of_vertices(), 4u);
+  EXPECT_EQ(flat.number_of_faces(), 2u);
+  CgalMesh lifted;
+  copy_into(square, lifted);
+  EXPECT_EQ(lifted.number_of_faces(), 2u);
+  EXPECT_EQ(lifted.point(CgalMesh::Vertex_index(2)), Kernel::Point_3(1, 1, 0));
+}
+
+}  // namespace
+}  // namespace disktune
