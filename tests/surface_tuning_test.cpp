@@ -164,6 +164,33 @@ TEST(SurfaceTune, EachOperationKeepsTheInvariants) {
   }
 }
 
+// Repeller injection with varying radii on an open surface (fixed boundary disks): every
+// step judged by the oracle, the boundary disks never moved.
+TEST(SurfaceTune, RepellerWithASizingOnAnOpenSurfaceKeepsTheInvariants) {
+  const auto domain = surface_file("mesh_with_border.off");
+  std::vector<double> radii;  // 0.02 to 0.045 of the diagonal, growing along x
+  const double d = diagonal(*domain), x0 = domain->bbox_min().x, dx = domain->bbox_max().x - x0;
+  for (const Vec3 v : domain->vertices()) radii.push_back(d * (0.02 + 0.025 * (v.x - x0) / dx));
+  Rng rng(12);
+  SurfacePacking packing = sample_surface_mps(domain, SurfaceSizing::per_vertex(*domain, radii), rng);
+  std::vector<std::pair<DiskId, Vec3>> fixed;
+  for (const DiskId id : packing.ids())
+    if (packing.flags(id) & kFixed) fixed.push_back({id, packing.center(id)});
+  ASSERT_FALSE(fixed.empty());
+  const std::size_t start = packing.size();
+  for (int k = 0; k < 60; ++k) {
+    const auto ids = packing.ids();
+    repeller_inject(packing, ids[uniform_index(rng, ids.size())], rng, 3);
+    const auto report = surface_report(packing, 2);
+    ASSERT_TRUE(report.ok()) << "step " << k << ": " << report.summary();
+  }
+  EXPECT_GT(packing.size(), start) << "the repeller never injected";
+  for (const auto& [id, c] : fixed) {
+    ASSERT_TRUE(packing.alive(id));
+    EXPECT_EQ(norm(packing.center(id) - c), 0.0);
+  }
+}
+
 // Between operations of the automatic schedule, both ways, the packing stays valid.
 TEST(SurfaceTune, ScheduleKeepsTheInvariantsBetweenOperations) {
   const auto domain = surface_file("mesh_with_border.off");

@@ -7,6 +7,7 @@
 #include <tuple>
 
 #include "../src/tuning/undo_log.h"
+#include "../src/tuning/void_repair.h"
 #include "disktune/density.h"
 #include "disktune/errors.h"
 #include "disktune/mesh.h"
@@ -361,6 +362,19 @@ TEST(UndoLog, RevertRestoresTheExactPacking) {
   }
   log.revert();
   EXPECT_EQ(snapshot(), before);
+}
+
+// The repeller's choice (paper 2.2, 6.1.2): the largest |c - point| - r(c), not the
+// farthest point, so a point a smaller disk reaches can win; the first of equals wins.
+TEST(RepellerChoice, TheLargestWeightedDistanceWins) {
+  const std::vector<double> dist{1.0, 0.75, 0.25}, radius{0.5, 0.125, 0.125};  // exact in binary
+  auto choose = [&](const std::vector<double>& r) {
+    return detail::farthest_weighted_index(dist.size(), [&](std::size_t i) { return dist[i]; },
+                                           [&](std::size_t i) { return r[i]; });
+  };
+  EXPECT_EQ(choose(radius), 1u);                 // 0.625 beats 0.5
+  EXPECT_EQ(choose({0.125, 0.125, 0.125}), 0u);  // one radius: the farthest
+  EXPECT_EQ(choose({0.25, 0.0, 0.0}), 0u);       // 0.75 = 0.75: the first
 }
 
 }  // namespace

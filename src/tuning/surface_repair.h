@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Shared steps of the surface tuning operations (internal): the surface counterparts
-// of void_repair.h, with void points in place of planar corners.
+// The surface's primitives for the tuning operations (internal; space.h gathers them
+// with the planar ones of void_repair.h): void points in place of planar corners.
 #pragma once
 
 #include <vector>

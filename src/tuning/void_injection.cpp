@@ -1,87 +1,42 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Void injection (paper, 2.1) and the void repair it shares with the other operations.
-#include <algorithm>
-#include <cmath>
-
+// Void injection (paper, 2.1 and 7.2), once for the plane and surfaces (space.h): lift
+// p, move it to one end of its void's weighted diameter, and refill what it left.
+#include "disktune/surface_tuning.h"
 #include "disktune/tuning.h"
-#include "void_repair.h"
+#include "space.h"
 
 namespace disktune {
-namespace detail {
+namespace {
 
-Vec2 void_corner(const Packing& packing, const std::vector<Corner>& corners, Rng& rng) {
-  // Equal up to rounding: the two ends of a diameter pair under one radius.
-  const std::size_t k = weighted_diameter_index(
-      corners.size(), [&](std::size_t i, std::size_t j) { return squared_distance(corners[i].point, corners[j].point); },
-      [&](std::size_t i) { return packing.radius_at(corners[i].point); }, 1e-12 * packing.max_radius(), rng);
-  return corners[k].point;
-}
-
-bool covers_all(const Packing& packing, Vec2 c, const std::vector<Corner>& corners) {
-  const double r = packing.radius_at(c);
-  const double inside = packing.sizing() ? r * (1 - 1e-7) : r;
-  for (const Corner& k : corners) {
-    if (!is_covered(squared_distance(c, k.point), inside)) return false;
-  }
-  return true;
-}
-
-std::vector<Neighbor> mobile_neighbors(const Packing& packing, Vec2 point, DiskId self, Rng& rng) {
-  std::vector<Neighbor> near;
-  const double r = packing.radius_at(point);
-  packing.for_each_near(point, r + packing.max_radius(), [&](const Neighbor& n) {
-    if (n.id == self || (packing.flags(n.id) & (kFixed | kFrozen))) return;
-    if (n.d2 > (r + n.radius) * (r + n.radius)) return;  // does not overlap a disk at point
-    for (const Neighbor& m : near) {
-      if (m.id == n.id) return;
-    }
-    near.push_back(n);
-  });
-  for (std::size_t i = near.size(); i > 1; --i) std::swap(near[i - 1], near[uniform_index(rng, i)]);
-  return near;
-}
-
-bool void_free_near(const Packing& packing, Vec2 center, double r) {
-  std::vector<Corner> corners;
-  return !packing.any_near(center, (r + packing.max_radius()) * (1 + kRelTol), [&](const Neighbor& n) {
-    corners_on_circle(packing, n.id, corners);
-    return !corners.empty();
-  });
-}
-
-std::size_t repair_void(UndoLog& log, const Packing& packing, Vec2 center, double r, Rng& rng,
-                        std::size_t max_added) {
-  std::vector<Corner> corners;
-  for (std::size_t added = 0;; ++added) {
-    corners.clear();
-    corners_in_region(packing, center, r, {}, corners);
-    if (corners.empty()) return added;
-    if (added == max_added) return max_added + 1;
-    const Vec2 at = void_corner(packing, corners, rng);
-    log.insert(at, packing.radius_at(at));
-  }
-}
-
-}  // namespace detail
-
-std::size_t void_inject(Packing& packing, DiskId p, Rng& rng, std::size_t max_added) {
+template <class P>
+std::size_t void_inject_in(P& packing, DiskId p, Rng& rng, std::size_t max_added) {
+  using S = detail::Space<P>;
   if (packing.flags(p) & (kFixed | kFrozen)) return 0;
-  const Vec2 c = packing.center(p);
-  const double r = packing.radius(p);
-  std::vector<Corner> corners;
-  corners_in_region(packing, c, r, {p}, corners);
-  if (corners.empty()) return 0;  // no room: p's void is a point
-  detail::UndoLog log(packing);
-  const Vec2 to = detail::void_corner(packing, corners, rng);
+  const auto c = packing.center(p);
+  const double reach = S::void_reach(packing.radius(p));
+  const auto voids = S::voids_in(packing, c, reach, {p});
+  if (voids.empty()) return 0;  // no room: p's void is a point
+  detail::BasicUndoLog<P> log(packing);
+  const auto to = S::void_choice(packing, voids, rng);
   log.move(p, to);
   // Weighted diameter below 0: p covers its whole void from there, nothing to inject.
-  if (detail::covers_all(packing, to, corners)) return 0;
-  const std::size_t added = detail::repair_void(log, packing, c, r, rng, max_added);
+  if (S::covers_all(packing, to, voids)) return 0;
+  const std::size_t added = S::repair_void(log, packing, c, reach, rng, max_added);
   if (added > max_added) {
     log.revert();
     return 0;
   }
   return added;
+}
+
+}  // namespace
+
+std::size_t void_inject(Packing& packing, DiskId p, Rng& rng, std::size_t max_added) {
+  return void_inject_in(packing, p, rng, max_added);
+}
+
+std::size_t void_inject(SurfacePacking& packing, DiskId p, Rng& rng, std::size_t max_added) {
+  return void_inject_in(packing, p, rng, max_added);
 }
 
 }  // namespace disktune

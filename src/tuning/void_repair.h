@@ -34,6 +34,22 @@ std::size_t weighted_diameter_index(std::size_t n, Distance2&& d2, Radius&& radi
   return top[uniform_index(rng, top.size())];
 }
 
+/// The index, among n void points, of largest weighted distance w(c_i, point) =
+/// |c_i - point| - radius(i) from a repeller point (paper, 2.2 and 6.1.2): where a
+/// repelled disk goes, so that with varying radii it favours corners its new, smaller
+/// disk still reaches. `distance(i)` is |c_i - point|; the first of equal ones wins.
+/// Planar corners and surface void points both choose through it.
+template <class Distance, class Radius>
+std::size_t farthest_weighted_index(std::size_t n, Distance&& distance, Radius&& radius) {
+  std::size_t best = 0;
+  double best_w = -1e300;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double w = distance(i) - radius(i);
+    if (w > best_w) best = i, best_w = w;
+  }
+  return best;
+}
+
 /// The corner a new disk goes to (paper 2.1 and 6.1.1): the one of largest weighted
 /// diameter max_j |c - c_j| - r(c), r from the packing's sizing; for one radius, an end
 /// of the diameter pair. Ties (both ends, for one radius) are broken at random: a fixed

@@ -1,0 +1,66 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The planar steps the tuning operations share (void_repair.h).
+#include "void_repair.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace disktune {
+namespace detail {
+
+Vec2 void_corner(const Packing& packing, const std::vector<Corner>& corners, Rng& rng) {
+  // Equal up to rounding: the two ends of a diameter pair under one radius.
+  const std::size_t k = weighted_diameter_index(
+      corners.size(), [&](std::size_t i, std::size_t j) { return squared_distance(corners[i].point, corners[j].point); },
+      [&](std::size_t i) { return packing.radius_at(corners[i].point); }, 1e-12 * packing.max_radius(), rng);
+  return corners[k].point;
+}
+
+bool covers_all(const Packing& packing, Vec2 c, const std::vector<Corner>& corners) {
+  const double r = packing.radius_at(c);
+  const double inside = packing.sizing() ? r * (1 - 1e-7) : r;
+  for (const Corner& k : corners) {
+    if (!is_covered(squared_distance(c, k.point), inside)) return false;
+  }
+  return true;
+}
+
+std::vector<Neighbor> mobile_neighbors(const Packing& packing, Vec2 point, DiskId self, Rng& rng) {
+  std::vector<Neighbor> near;
+  const double r = packing.radius_at(point);
+  packing.for_each_near(point, r + packing.max_radius(), [&](const Neighbor& n) {
+    if (n.id == self || (packing.flags(n.id) & (kFixed | kFrozen))) return;
+    if (n.d2 > (r + n.radius) * (r + n.radius)) return;  // does not overlap a disk at point
+    for (const Neighbor& m : near) {
+      if (m.id == n.id) return;
+    }
+    near.push_back(n);
+  });
+  for (std::size_t i = near.size(); i > 1; --i) std::swap(near[i - 1], near[uniform_index(rng, i)]);
+  return near;
+}
+
+bool void_free_near(const Packing& packing, Vec2 center, double r) {
+  std::vector<Corner> corners;
+  return !packing.any_near(center, (r + packing.max_radius()) * (1 + kRelTol), [&](const Neighbor& n) {
+    corners_on_circle(packing, n.id, corners);
+    return !corners.empty();
+  });
+}
+
+std::size_t repair_void(UndoLog& log, const Packing& packing, Vec2 center, double r, Rng& rng,
+                        std::size_t max_added) {
+  std::vector<Corner> corners;
+  for (std::size_t added = 0;; ++added) {
+    corners.clear();
+    corners_in_region(packing, center, r, {}, corners);
+    if (corners.empty()) return added;
+    if (added == max_added) return max_added + 1;
+    const Vec2 at = void_corner(packing, corners, rng);
+    log.insert(at, packing.radius_at(at));
+  }
+}
+
+}  // namespace detail
+
+}  // namespace disktune
