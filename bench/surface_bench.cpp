@@ -110,7 +110,7 @@ int main(int argc, char** argv) {
       for (int k = 0; k < reps; ++k) {
         Rng rng(static_cast<std::uint64_t>(k) + 1);
         const auto t0 = Clock::now();
-        auto p = std::make_unique<SurfacePacking>(sample_surface_mps(domain, SurfaceSizing::constant(row.r), rng));
+        auto p = std::make_unique<SurfacePacking>(sample_mps(domain, SurfaceSizing::constant(row.r), rng));
         row.mps = std::min(row.mps, since(t0));
         mps = std::move(p);
       }

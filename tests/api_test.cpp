@@ -14,6 +14,9 @@
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <stdexcept>
 #include <tuple>
 #include <vector>
@@ -44,6 +47,22 @@ std::vector<std::tuple<DiskId, double, double, double, double, int>> state_of(co
   return out;
 }
 
+// One include gives every public header but the CGAL and OpenMesh adapters.
+TEST(Umbrella, IncludesEveryPublicHeader) {
+  const std::filesystem::path dir = std::filesystem::path(DISKTUNE_DATA_DIR) / ".." / "include" / "disktune";
+  std::ifstream in(dir / "disktune.h");
+  std::stringstream text;
+  text << in.rdbuf();
+  std::size_t headers = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    const std::string name = entry.path().filename().string();
+    if (!entry.is_regular_file() || name == "disktune.h") continue;
+    ++headers;
+    EXPECT_NE(text.str().find("#include \"disktune/" + name + "\""), std::string::npos) << name;
+  }
+  EXPECT_GT(headers, 30u);
+}
+
 TEST(RadiusForCount, AMaximalSampleAtThatRadiusHasAboutTheCount) {
   const PeriodicBox box(1.0, 1.0);
   for (const std::size_t n : {2000u, 20000u}) {
@@ -55,7 +74,7 @@ TEST(RadiusForCount, AMaximalSampleAtThatRadiusHasAboutTheCount) {
   for (const std::size_t n : {2000u, 8000u}) {
     Rng rng(n);
     const SurfacePacking mps =
-        sample_surface_mps(elephant, SurfaceSizing::constant(radius_for_count(n, elephant->area())), rng);
+        sample_mps(elephant, SurfaceSizing::constant(radius_for_count(n, elephant->area())), rng);
     EXPECT_NEAR(static_cast<double>(mps.size()) / n, 1.0, 0.05) << n;
   }
 }
@@ -160,7 +179,7 @@ TEST(Transaction, AnExceptionFromACallbackLeavesThePlanarPackingAsItWas) {
 TEST(Transaction, ACancelledSurfaceTuneLeavesThePackingAsItWas) {
   const auto sphere = test::surface_file("sphere.off");
   Rng rng(5);
-  SurfacePacking packing = sample_surface_mps(sphere, SurfaceSizing::constant(0.08), rng);
+  SurfacePacking packing = sample_mps(sphere, SurfaceSizing::constant(0.08), rng);
   const auto before = state_of(packing);
   TuneOptions options;
   int calls = 0;

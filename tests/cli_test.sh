@@ -85,13 +85,13 @@ expect tune-eject-wrong-method 2 "use an ejection method" -- "$bin" tune --radiu
 expect tune-eject-too-far 4 "NOT reached" -- "$bin" tune --radius 0.03 --target-fraction 0.30 --method attractor
 expect tune-bad-method 2 "method" -- "$bin" tune --radius 0.03 --target-count 900 --method fancy
 expect tune-angle 0 "reached" -- "$bin" tune --radius 0.03 --target-fraction 0.7 --method angle
-expect tune-wrong-radius 2 "m.csv:2: radius 0.03 differs" -- "$bin" tune --radius 0.02 --input m.csv --target-count 2000
+expect tune-wrong-radius 2 "m.csv:2: radius 0.03 differs.*made with, 0.03 \(--radius 0.03\)" -- "$bin" tune --radius 0.02 --input m.csv --target-count 2000
 printf 'x,y,r\n0.5,0.5,0.03\n0.51,0.5,0.03\n' >conflict.csv
 expect tune-conflict 2 "closer than r" -- "$bin" tune --radius 0.03 --input conflict.csv --target-count 900
 printf 'x,y,r\n0.5,0.5,0.03\n' >sparse.csv
-expect tune-not-maximal 2 "not maximal" -- "$bin" tune --radius 0.03 --input sparse.csv --target-count 900
+expect tune-not-maximal 2 "not maximal.*start from a maximal sample \('disktune sample'\)" -- "$bin" tune --radius 0.03 --input sparse.csv --target-count 900
 printf 'x,y,r\n1.5,0.5,0.03\n' >outside.csv
-expect tune-outside 2 "outside the 1 x 1 box" -- "$bin" tune --radius 0.03 --input outside.csv --target-count 900
+expect tune-outside 2 "outside the 1 x 1 box; give the width and height .*\(--width, --height\)" -- "$bin" tune --radius 0.03 --input outside.csv --target-count 900
 absent tune-refused-output never.csv
 
 expect demo 0 "sample: [0-9]+ disks" -- "$bin"
@@ -180,7 +180,9 @@ expect planar-report-png 2 "periodic box only" -- "$bin" report p8.csv --domain 
 expect planar-big-radius 2 "corners" -- "$bin" sample --domain hole.poly --radius 0.5 --output z.csv
 absent planar-big-radius-output z.csv
 printf 'x,y,r\n0.5,0.5,0.05\n' > inhole.csv
-expect planar-point-in-hole 2 "inhole.csv:2: center \(0.5, 0.5\) lies outside the domain" -- "$bin" tune --domain hole.poly --radius 0.05 --input inhole.csv --target-fraction 0.8
+expect planar-point-in-hole 2 "inhole.csv:2: center \(0.5, 0.5\) lies outside the domain.*\(--domain\)" -- "$bin" tune --domain hole.poly --radius 0.05 --input inhole.csv --target-fraction 0.8
+printf 'x,y,r\n0.15,0.15,0.05\n' > nocorner.csv
+expect planar-no-corner-disk 2 "no disk on corner 0 of boundary loop 0 .*start from a sample of the domain \('disktune sample'\)" -- "$bin" tune --domain hole.poly --radius 0.05 --input nocorner.csv --target-fraction 0.8
 expect planar-missing 3 "cannot|no such|does not exist" -- "$bin" sample --domain nothere.poly --radius 0.05
 sed 's/^3 3 4$/3 3 1/; s/^4 4 1$/4 4 3/' hole.poly > bad.poly
 expect planar-self-intersecting 2 "bad.poly" -- "$bin" sample --domain bad.poly --radius 0.05
@@ -190,11 +192,13 @@ expect planar-bad-extension 2 "\.poly" -- "$bin" sample --domain hole.txt --radi
 expect sizing-sample 0 "sizing 0.03 \+ 0.03\*x" -- "$bin" sample --domain hole.poly --sizing "0.03 + 0.03*x" --output v.csv
 expect sizing-tune 0 "reached" -- "$bin" tune --domain hole.poly --sizing "0.03 + 0.03*x" --input v.csv --target-fraction 0.7 --output v7.csv
 expect sizing-report 0 "maximal, conflict-free" -- "$bin" report v7.csv --domain hole.poly --sizing "0.03 + 0.03*x" --json v7.json
-expect sizing-wrong-radius 2 "v7.csv:2: radius .* sizing" -- "$bin" report v7.csv --domain hole.poly --sizing "0.02 + 0.03*x"
+expect sizing-wrong-radius 2 "v7.csv:2: radius .* sizing .*give the sizing it was made with \(--sizing\)" -- "$bin" report v7.csv --domain hole.poly --sizing "0.02 + 0.03*x"
 expect sizing-periodic 0 "sample: [0-9]+ disks" -- "$bin" sample --sizing "0.03 + 0.01*sin(2*pi*x)" --output vp.csv
 expect sizing-both 2 "one of the two" -- "$bin" sample --radius 0.05 --sizing 0.05
 expect sizing-neither 2 "one of the two" -- "$bin" sample --output z.csv
-expect sizing-syntax 2 "position" -- "$bin" sample --domain hole.poly --sizing "0.03 + * x"
+expect sizing-syntax 2 "^disktune: error: --sizing: the sizing expression .* position" -- "$bin" sample --domain hole.poly --sizing "0.03 + * x"
+expect sizing-boundary-periodic 2 "^disktune: error: --sizing \"boundary:0.005,0.05,0.2\": boundary grading needs a planar domain.* \(--domain\)" -- "$bin" sample --sizing boundary:0.005,0.05,0.2 --output z.csv
+expect sizing-empty 2 "^disktune: error: --sizing: the sizing is empty: give a radius" -- "$bin" sample --domain hole.poly --sizing " " --output z.csv
 expect sizing-steep 2 "gradation" -- "$bin" sample --domain hole.poly --sizing "0.01 + 0.8*x" --output z.csv
 absent sizing-steep-output z.csv
 expect sizing-warning 0 "warning: the sizing's gradation L = 0.4" -- "$bin" sample --domain hole.poly --sizing "0.01 + 0.4*x" --output z.csv
@@ -257,10 +261,13 @@ absent surface-angle-output never.csv
 expect surface-mesh-vtk 2 "supported on a surface: \.off, \.obj, \.ply" -- "$bin" mesh e4.csv --domain "$eight" --radius 0.045 --output never.vtk
 absent surface-mesh-vtk-output never.vtk
 { head -n 3 e.csv; echo "0.5,0.5,0.5,0.045"; tail -n +4 e.csv; } >offsurface.csv
-expect surface-point-off 2 "offsurface\.csv:4: point \(0\.5, 0\.5, 0\.5\) lies .* from the surface" -- "$bin" tune --domain "$eight" --radius 0.045 --input offsurface.csv --target-count 420 --output never.csv
+expect surface-point-off 2 "offsurface\.csv:4: point \(0\.5, 0\.5, 0\.5\) lies .* from the surface.*\(--domain\)" -- "$bin" tune --domain "$eight" --radius 0.045 --input offsurface.csv --target-count 420 --output never.csv
 absent surface-point-off-output never.csv
-expect surface-wrong-radius 2 "e\.csv:2: radius 0\.045 differs" -- "$bin" report e.csv --domain "$eight" --radius 0.05 --json never.json
+expect surface-wrong-radius 2 "e\.csv:2: radius 0\.045 differs.*made with, 0\.045 \(--radius 0\.045\)" -- "$bin" report e.csv --domain "$eight" --radius 0.05 --json never.json
 absent surface-wrong-radius-output never.json
+head -n 3 e.csv >esparse.csv
+expect surface-not-maximal 2 "esparse\.csv: .*not maximal.*sample the surface again \('disktune sample'\)" -- "$bin" tune --domain "$eight" --radius 0.045 --input esparse.csv --target-count 420 --output never.csv
+expect surface-sizing-curvature 2 "^disktune: error: --sizing \"curvature:0.1\": expected curvature:RMIN,RMAX" -- "$bin" sample --domain "$eight" --sizing curvature:0.1 --output never.csv
 
 # the sweep table (tiny)
 expect sweep 0 "\| CVT at the count of eta" -- "$bin" sweep --radius 0.05 --eta 0 0.6 --cvt-iterations 5 --output sweep.md

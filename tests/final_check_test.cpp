@@ -86,7 +86,7 @@ TEST(FinalCheck, APlanarTuneLeavingAHoleHandsBackAValidPacking) {
 TEST(FinalCheck, ASurfaceTuneLeavingAHoleHandsBackAValidPacking) {
   const auto domain = test::surface_file("eight.off");
   Rng rng(5);
-  SurfacePacking packing = sample_surface_mps(domain, SurfaceSizing::constant(0.05), rng);
+  SurfacePacking packing = sample_mps(domain, SurfaceSizing::constant(0.05), rng);
   const std::size_t sampled = packing.size();
   TuneOptions options;
   options.method = Method::void_injection;
@@ -111,7 +111,7 @@ TEST(FinalCheck, PackingDefectNamesTheCheckAndThePlace) {
   EXPECT_TRUE(mentions(packing_defect(packing), "not maximal: the point (")) << packing_defect(packing);
 
   const auto domain = test::surface_file("sphere.off");
-  SurfacePacking on_sphere = sample_surface_mps(domain, SurfaceSizing::constant(0.2), rng);
+  SurfacePacking on_sphere = sample_mps(domain, SurfaceSizing::constant(0.2), rng);
   EXPECT_EQ(packing_defect(on_sphere), "");
   on_sphere.insert(on_sphere.point(on_sphere.ids()[3]));  // a second disk on one center
   EXPECT_TRUE(mentions(packing_defect(on_sphere), "cover each other's centers (a conflict)"))

@@ -63,6 +63,37 @@ TEST(PointsCsv, BadContentNamesTheLine) {
   EXPECT_THROW(read_points_csv(dir.file("missing.csv")), IoError);
 }
 
+// A packing that does not fit the box or the radius asked for: the message says what to
+// give in the library's terms (no command-line flags), and names the parameter to change
+// so that a front end can add its own name for it.
+TEST(PointsCsv, MismatchNamesWhatToChange) {
+  TempDir dir;
+  write_text(dir.file("r.csv"), "x,y,r\n0.5,0.5,0.03\n");
+  try {
+    read_packing_csv(dir.file("r.csv"), PeriodicBox(), 0.02);
+    ADD_FAILURE() << "accepted a radius of 0.03 for 0.02";
+  } catch (const InvalidInput& e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find("r.csv:2: radius 0.03 differs from the radius 0.02"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("give the radius the packing was made with, 0.03"), std::string::npos) << msg;
+    EXPECT_EQ(msg.find("--"), std::string::npos) << msg;
+    EXPECT_EQ(e.remedy(), InvalidInput::Remedy::radius);
+    EXPECT_EQ(e.value(), "0.03");
+  }
+  write_text(dir.file("box.csv"), "x,y,r\n1.5,0.5,0.1\n");
+  try {
+    read_packing_csv(dir.file("box.csv"), PeriodicBox(), 0.1);
+    ADD_FAILURE() << "accepted a center outside the box";
+  } catch (const InvalidInput& e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find("box.csv:2: center (1.5, 0.5) lies outside the 1 x 1 box; give the width and height"),
+              std::string::npos)
+        << msg;
+    EXPECT_EQ(msg.find("--"), std::string::npos) << msg;
+    EXPECT_EQ(e.remedy(), InvalidInput::Remedy::box_size);
+  }
+}
+
 TEST(AtomicWrite, FailureLeavesNoFileBehind) {
   TempDir dir;
   const std::string target = dir.file("out.csv");

@@ -259,9 +259,9 @@ TEST(SurfaceDomainAdapters, SamplingRunsOnEitherMesh) {
   const auto from_cgal = std::make_shared<const SurfaceDomain>(surface_domain_from(sm));
   const auto from_openmesh = std::make_shared<const SurfaceDomain>(surface_domain_from(om));
   Rng a(3), b(3), c(3);
-  const SurfacePacking p = sample_surface_mps(ref, SurfaceSizing::constant(0.05), a);
-  const SurfacePacking q = sample_surface_mps(from_cgal, SurfaceSizing::constant(0.05), b);
-  const SurfacePacking o = sample_surface_mps(from_openmesh, SurfaceSizing::constant(0.05), c);
+  const SurfacePacking p = sample_mps(ref, SurfaceSizing::constant(0.05), a);
+  const SurfacePacking q = sample_mps(from_cgal, SurfaceSizing::constant(0.05), b);
+  const SurfacePacking o = sample_mps(from_openmesh, SurfaceSizing::constant(0.05), c);
   ASSERT_EQ(p.size(), q.size());
   for (const DiskId id : p.ids()) EXPECT_EQ(p.center(id), q.center(id));
   EXPECT_SURFACE_OK(o);

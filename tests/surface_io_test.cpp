@@ -40,7 +40,7 @@ TEST(SurfaceCsv, RoundTripKeepsPointsRadiiAndBoundaryDisks) {
   TempDir dir;
   const auto domain = surface("mesh_with_border.off");
   Rng rng(5);
-  const SurfacePacking a = sample_surface_mps(domain, SurfaceSizing::constant(4), rng);
+  const SurfacePacking a = sample_mps(domain, SurfaceSizing::constant(4), rng);
   write_surface_csv(dir.file("a.csv"), a);
   EXPECT_EQ(read_text(dir.file("a.csv")).substr(0, 8), "x,y,z,r\n");
 
@@ -56,7 +56,7 @@ TEST(SurfaceCsv, RoundTripKeepsPointsRadiiAndBoundaryDisks) {
     fixed += (b.flags(ib[k]) & kFixed) != 0;
   }
   EXPECT_GT(fixed, 0u);
-  EXPECT_NO_THROW(validate_surface_packing(b, "a.csv"));
+  EXPECT_NO_THROW(validate_packing(b, "a.csv"));
 
   // Written again, the file reads back to the same points.
   write_surface_csv(dir.file("b.csv"), b);
@@ -102,6 +102,19 @@ TEST(SurfaceCsv, RefusalsNameTheLine) {
     SurfacePacking p(domain, SurfaceSizing::constant(0.1));
     const std::string msg = message_of([&] { read_surface_csv(dir.file("bad.csv"), p); });
     EXPECT_NE(msg.find(where), std::string::npos) << msg;
+  }
+  // The radius differs: the message gives the samples' radius, and names the radius as
+  // what to change (the command line adds --radius).
+  write_text(dir.file("bad.csv"), "x,y,z,r\n" + row(v, 0.2));
+  try {
+    SurfacePacking q(domain, SurfaceSizing::constant(0.1));
+    read_surface_csv(dir.file("bad.csv"), q);
+    ADD_FAILURE() << "accepted a radius of 0.2 for 0.1";
+  } catch (const InvalidInput& e) {
+    EXPECT_NE(std::string(e.what()).find("give the radius the samples were made with, 0.2"), std::string::npos)
+        << e.what();
+    EXPECT_EQ(e.remedy(), InvalidInput::Remedy::radius);
+    EXPECT_EQ(e.value(), "0.2");
   }
   SurfacePacking p(domain, SurfaceSizing::constant(0.1));
   EXPECT_THROW(read_surface_csv(dir.file("missing.csv"), p), IoError);

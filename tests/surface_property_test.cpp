@@ -86,7 +86,7 @@ TEST(SurfaceVoids, AHoleWhoseVerticesAllLieOnThirdCirclesIsFound) {
       EXPECT_LT(norm(Vec3{u.x, u.y, u.z} - origin), 0.25) << u.why;
 
     EXPECT_FALSE(is_maximal(packing));
-    EXPECT_THROW(validate_surface_packing(packing, "cusp hole"), InvalidInput);
+    EXPECT_THROW(validate_packing(packing, "cusp hole"), InvalidInput);
     std::vector<SurfaceVoidPoint> found;
     void_points_near(packing, origin, 0.5, {}, found);
     EXPECT_FALSE(found.empty());
@@ -101,7 +101,7 @@ TEST(SurfaceVoids, AHoleWhoseVerticesAllLieOnThirdCirclesIsFound) {
 TEST(SurfaceTune, SeedElevenEjectionOfEightStaysMaximalAfterEveryOperation) {
   const auto domain = surface_file("eight.off");
   Rng rng(11);
-  SurfacePacking packing = sample_surface_mps(domain, SurfaceSizing::constant(0.03), rng);
+  SurfacePacking packing = sample_mps(domain, SurfaceSizing::constant(0.03), rng);
   ASSERT_EQ(packing.size(), 794u);
   Rng tune_rng(11);
   TuneOptions options;
@@ -176,7 +176,7 @@ TEST_P(SurfaceProperty, TunesStayConflictFreeAndMaximal) {
     for (int seed = 1; seed <= seeds; ++seed) {
       Rng rng(static_cast<std::uint64_t>(seed));
       const SurfacePacking mps =
-          sample_surface_mps(domain, sweep_sizing(*domain, varying, 200), rng);
+          sample_mps(domain, sweep_sizing(*domain, varying, 200), rng);
       const std::string where = std::string(s.name) +
                                 (varying ? ", varying radius" : ", one radius") + ", seed " +
                                 std::to_string(seed);

@@ -298,7 +298,7 @@ TEST(SurfaceSizing, ParseSpecs) {
   std::string msg = message_of([&] { parse_surface_sizing("curvature:0.1", s); });
   EXPECT_TRUE(contains(msg, "curvature:RMIN,RMAX")) << msg;
   msg = message_of([&] { parse_surface_sizing("curvature:0.2,0.1", s); });
-  EXPECT_TRUE(contains(msg, "--sizing curvature:0.2,0.1")) << msg;
+  EXPECT_TRUE(contains(msg, "sizing \"curvature:0.2,0.1\"")) << msg;
   EXPECT_TRUE(contains(msg, "r_min <= r_max")) << msg;
   EXPECT_THROW(parse_surface_sizing("curvature:0,0.1", s), InvalidInput);
   EXPECT_THROW(parse_surface_sizing("curvature:0.01,0.1,3", s), InvalidInput);

@@ -33,7 +33,7 @@ TEST(SurfaceMps, MaximalAndConflictFreeOnRealSurfaces) {
     for (std::uint64_t seed = 1; seed <= 3; ++seed) {
       Rng rng(seed);
       const SurfacePacking packing =
-          sample_surface_mps(domain, SurfaceSizing::constant(c.r_over_diagonal * diagonal(*domain)), rng);
+          sample_mps(domain, SurfaceSizing::constant(c.r_over_diagonal * diagonal(*domain)), rng);
       SCOPED_TRACE(std::string(c.file) + " seed " + std::to_string(seed));
       EXPECT_SURFACE_OK(packing);
       EXPECT_TRUE(is_maximal(packing));
@@ -49,7 +49,7 @@ TEST(SurfaceMps, MaximalAndConflictFreeOnRealSurfaces) {
 TEST(SurfaceMps, OpenBoundaryHasFixedDisksOnIt) {
   const auto domain = surface_file("mesh_with_border.off");
   Rng rng(7);
-  const SurfacePacking packing = sample_surface_mps(domain, SurfaceSizing::constant(0.03 * diagonal(*domain)), rng);
+  const SurfacePacking packing = sample_mps(domain, SurfaceSizing::constant(0.03 * diagonal(*domain)), rng);
   std::size_t fixed = 0;
   for (const DiskId id : packing.ids()) fixed += (packing.flags(id) & kFixed) ? 1 : 0;
   EXPECT_GT(fixed, 10u);
@@ -68,7 +68,7 @@ TEST(SurfaceMps, LongBoundaryEdges) {
   const auto thin = std::make_shared<const SurfaceDomain>(sliver, std::vector<SurfaceDomain::Triangle>{{0, 1, 2}});
   for (const auto& [domain, r] : {std::pair{plate, 0.01}, std::pair{thin, 0.1}}) {
     Rng rng(3);
-    const SurfacePacking packing = sample_surface_mps(domain, SurfaceSizing::constant(r), rng);
+    const SurfacePacking packing = sample_mps(domain, SurfaceSizing::constant(r), rng);
     const auto report = surface_report(packing);
     EXPECT_TRUE(report.ok()) << report.summary();
     EXPECT_GT(report.boundary_count, static_cast<std::size_t>(9 / r));  // two edges 10 long
@@ -78,8 +78,8 @@ TEST(SurfaceMps, LongBoundaryEdges) {
 TEST(SurfaceMps, SameSeedSameSample) {
   const auto domain = surface_file("eight.off");
   Rng a(5), b(5);
-  const auto p = sample_surface_mps(domain, SurfaceSizing::constant(0.05 * diagonal(*domain)), a);
-  const auto q = sample_surface_mps(domain, SurfaceSizing::constant(0.05 * diagonal(*domain)), b);
+  const auto p = sample_mps(domain, SurfaceSizing::constant(0.05 * diagonal(*domain)), a);
+  const auto q = sample_mps(domain, SurfaceSizing::constant(0.05 * diagonal(*domain)), b);
   ASSERT_EQ(p.size(), q.size());
   for (const DiskId id : p.ids()) EXPECT_EQ(p.center(id), q.center(id));
 }
@@ -95,7 +95,7 @@ TEST(SurfaceTune, EjectionAndInjectionReachExactCounts) {
   for (const Case& c : cases) {
     const auto domain = surface_file(c.file);
     Rng rng(1);
-    const SurfacePacking mps = sample_surface_mps(domain, SurfaceSizing::constant(c.r_over_diagonal * diagonal(*domain)), rng);
+    const SurfacePacking mps = sample_mps(domain, SurfaceSizing::constant(c.r_over_diagonal * diagonal(*domain)), rng);
     for (const double factor : {0.6, 1.4}) {
       SCOPED_TRACE(std::string(c.file) + " x" + std::to_string(factor));
       SurfacePacking packing = mps;
@@ -118,7 +118,7 @@ TEST(SurfaceTune, EjectionAndInjectionReachExactCounts) {
 TEST(SurfaceTune, WideAttractorRemovesDisksWhereTheAttractorStalled) {
   const auto domain = surface_file("eight.off");
   Rng rng(2);
-  SurfacePacking packing = sample_surface_mps(domain, SurfaceSizing::constant(0.03 * diagonal(*domain)), rng);
+  SurfacePacking packing = sample_mps(domain, SurfaceSizing::constant(0.03 * diagonal(*domain)), rng);
   auto sweep = [&](std::size_t (*op)(SurfacePacking&, DiskId, Rng&, std::size_t)) {
     std::size_t removed = 0;
     for (const DiskId id : packing.ids()) {
@@ -150,7 +150,7 @@ TEST(SurfaceTune, EachOperationKeepsTheInvariants) {
                                             {"wide attractor", &wide_attractor_eject}};
   for (const auto& [name, op] : ops) {
     Rng rng(3);
-    SurfacePacking packing = sample_surface_mps(domain, SurfaceSizing::constant(0.06 * diagonal(*domain)), rng);
+    SurfacePacking packing = sample_mps(domain, SurfaceSizing::constant(0.06 * diagonal(*domain)), rng);
     std::size_t changed = 0;
     for (int k = 0; k < 25; ++k) {
       const auto ids = packing.ids();
@@ -172,7 +172,7 @@ TEST(SurfaceTune, RepellerWithASizingOnAnOpenSurfaceKeepsTheInvariants) {
   const double d = diagonal(*domain), x0 = domain->bbox_min().x, dx = domain->bbox_max().x - x0;
   for (const Vec3 v : domain->vertices()) radii.push_back(d * (0.02 + 0.025 * (v.x - x0) / dx));
   Rng rng(12);
-  SurfacePacking packing = sample_surface_mps(domain, SurfaceSizing::per_vertex(*domain, radii), rng);
+  SurfacePacking packing = sample_mps(domain, SurfaceSizing::per_vertex(*domain, radii), rng);
   std::vector<std::pair<DiskId, Vec3>> fixed;
   for (const DiskId id : packing.ids())
     if (packing.flags(id) & kFixed) fixed.push_back({id, packing.center(id)});
@@ -196,7 +196,7 @@ TEST(SurfaceTune, ScheduleKeepsTheInvariantsBetweenOperations) {
   const auto domain = surface_file("mesh_with_border.off");
   for (const double factor : {0.75, 1.3}) {
     Rng rng(8);
-    SurfacePacking packing = sample_surface_mps(domain, SurfaceSizing::constant(0.03 * diagonal(*domain)), rng);
+    SurfacePacking packing = sample_mps(domain, SurfaceSizing::constant(0.03 * diagonal(*domain)), rng);
     TuneOptions options;
     std::size_t operations = 0;
     options.after_surface_operation = [&](const SurfacePacking& now) {
@@ -217,7 +217,7 @@ TEST(SurfaceTune, VaryingRadiiStayValid) {
   const double d = diagonal(*domain), z0 = domain->bbox_min().z, dz = domain->bbox_max().z - z0;
   for (const Vec3 v : domain->vertices()) radii.push_back(d * (0.025 + 0.025 * (v.z - z0) / dz));
   Rng rng(2);
-  const SurfacePacking mps = sample_surface_mps(domain, SurfaceSizing::per_vertex(*domain, radii), rng);
+  const SurfacePacking mps = sample_mps(domain, SurfaceSizing::per_vertex(*domain, radii), rng);
   EXPECT_SURFACE_OK(mps);
   for (const double factor : {0.7, 1.3}) {
     SurfacePacking packing = mps;
@@ -236,30 +236,30 @@ TEST(SurfaceValidation, FollowsThePriorDiskRule) {
   const double d = diagonal(*domain), z0 = domain->bbox_min().z, dz = domain->bbox_max().z - z0;
   for (const Vec3 v : domain->vertices()) radii.push_back(d * (0.02 + 0.04 * (v.z - z0) / dz));
   Rng rng(6);
-  SurfacePacking packing = sample_surface_mps(domain, SurfaceSizing::per_vertex(*domain, radii), rng);
+  SurfacePacking packing = sample_mps(domain, SurfaceSizing::per_vertex(*domain, radii), rng);
   std::size_t covered_centers = 0;
   for (const DiskId i : packing.ids())
     for (const DiskId j : packing.ids())
       if (i != j && squared_norm(packing.center(i) - packing.center(j)) < packing.radius(j) * packing.radius(j)) ++covered_centers;
   EXPECT_GT(covered_centers, 0u) << "the case needs centers inside larger disks";
   EXPECT_TRUE(is_conflict_free(packing));
-  EXPECT_NO_THROW(validate_surface_packing(packing, "mps"));
+  EXPECT_NO_THROW(validate_packing(packing, "mps"));
   const DiskId a = packing.ids().front();
   packing.insert(packing.point(a));  // a second disk on the same center
   EXPECT_FALSE(is_conflict_free(packing));
-  EXPECT_NE(test::message_of([&] { validate_surface_packing(packing, "twice"); }).find("cover each other's centers"),
+  EXPECT_NE(test::message_of([&] { validate_packing(packing, "twice"); }).find("cover each other's centers"),
             std::string::npos);
 }
 
 TEST(SurfaceTune, RefusesAngleInjectionAndCrystalsWithASizing) {
   const auto domain = surface_file("sphere.off");
   Rng rng(1);
-  SurfacePacking packing = sample_surface_mps(domain, SurfaceSizing::constant(0.1), rng);
+  SurfacePacking packing = sample_mps(domain, SurfaceSizing::constant(0.1), rng);
   TuneOptions options;
   options.method = Method::angle_injection;
   EXPECT_NE(test::message_of([&] { tune(packing, Target::count(packing.size() + 5), rng, options); }).find("angle"),
             std::string::npos);
-  SurfacePacking sized = sample_surface_mps(
+  SurfacePacking sized = sample_mps(
       domain, SurfaceSizing::per_vertex(*domain, std::vector<double>(domain->vertices().size(), 0.1)), rng);
   EXPECT_NE(test::message_of([&] { crystal_eject(sized, rng, 5); }).find("one radius"), std::string::npos);
 }
@@ -269,7 +269,7 @@ TEST(SurfaceTune, CrystalStepsKeepTheInvariants) {
   const auto domain = surface_file("sphere.off");
   for (const bool inject : {true, false}) {
     Rng rng(4);
-    SurfacePacking packing = sample_surface_mps(domain, SurfaceSizing::constant(0.08), rng);
+    SurfacePacking packing = sample_mps(domain, SurfaceSizing::constant(0.08), rng);
     const std::size_t start = packing.size();
     int steps = 0;
     auto check = [&] {
@@ -290,7 +290,7 @@ TEST(SurfaceTune, TunedPackingsMeshTheSurface) {
   const auto domain = surface_file("eight.off");
   const double r = 0.03 * diagonal(*domain);
   Rng rng(9);
-  const SurfacePacking mps = sample_surface_mps(domain, SurfaceSizing::constant(r), rng);
+  const SurfacePacking mps = sample_mps(domain, SurfaceSizing::constant(r), rng);
   for (const double factor : {0.7, 1.0, 1.4}) {
     SCOPED_TRACE("x" + std::to_string(factor));
     SurfacePacking packing = mps;

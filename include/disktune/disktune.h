@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Everything disktune offers, in one include. The same verbs serve every domain (the
-// periodic box, planar domains with holes, triangulated surfaces): sample_mps /
-// sample_surface_mps, tune, is_maximal and validate, the meshes, and remesh, the
+// periodic box, planar domains with holes, triangulated surfaces): sample_mps, tune,
+// is_maximal, validate_packing and packing_defect, the meshes, and remesh, the
 // mesh-improvement stage in one call. The adapters to CGAL and OpenMesh meshes are
 // not included here (they need those libraries): disktune/cgal/*.h, disktune/openmesh/*.h.
 #pragma once
@@ -33,6 +33,7 @@
 #include "disktune/surface_io.h"
 #include "disktune/surface_mesh.h"
 #include "disktune/surface_packing.h"
+#include "disktune/surface_sampling.h"
 #include "disktune/surface_sizing.h"
 #include "disktune/surface_tuning.h"
 #include "disktune/surface_voids.h"

@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The exceptions disktune throws. Each carries a sentence a user can act on: what is
-// wrong, where, and what to do. Front ends map each kind to its own exit code.
+// wrong, where, and what to do, in the library's terms (never a front end's flags or
+// commands). Front ends map each kind to its own exit code.
 #pragma once
 
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace disktune {
 
@@ -15,7 +17,23 @@ struct Error : std::runtime_error {
 
 /// A parameter or an input file's content is not acceptable.
 struct InvalidInput : Error {
-  using Error::Error;
+  /// What the message asks the caller to change, when that is one of the call's
+  /// parameters other than the one at fault: the message says so in the library's
+  /// words, and a front end may add its own name for it (the command line adds its
+  /// flag). `sample`: start from a packing the library sampled (sampling.h,
+  /// surface_sampling.h).
+  enum class Remedy { none, radius, sizing, domain, box_size, sample };
+
+  explicit InvalidInput(const std::string& what, Remedy remedy = Remedy::none, std::string value = {})
+      : Error(what), remedy_(remedy), value_(std::move(value)) {}
+
+  Remedy remedy() const { return remedy_; }
+  /// The value the message suggests for that parameter ("0.03" for a radius), or empty.
+  const std::string& value() const { return value_; }
+
+ private:
+  Remedy remedy_;
+  std::string value_;
 };
 
 /// A file could not be read or written.

@@ -104,4 +104,10 @@ class Packing {
   double sized_radius(Vec2 q) const;
 };
 
+/// The count at area fraction 1 for a packing in a domain of the given area: A / (pi r^2
+/// / 4) for one radius, the integral of 4 / (pi r(x)^2) with a sizing (then "area
+/// fraction" is this relative density: docs/sizing.md). Targets (tuning.h) and the
+/// quality report's eta are counts over it.
+double density_unit(const Packing& packing, double area);
+
 }  // namespace disktune

@@ -18,10 +18,10 @@ void write_surface_csv(const std::string& path, const SurfacePacking& packing);
 /// domain and sizing): header `x,y,z,r` or `x,y,z` (the radius then comes from the
 /// sizing). Each point goes into the triangle whose closest point is nearest, moved onto
 /// that closest point; a point on an open boundary edge (within 1e-9 r) becomes a fixed
-/// disk (kFixed), as sample_surface_mps makes them. Throws InvalidInput naming the line
+/// disk (kFixed), as sample_mps makes them. Throws InvalidInput naming the line
 /// when a point lies farther than 1e-6 r from the surface, when a radius differs from
 /// the sizing's by more than 1e-6 relative, or when the file holds no disks; IoError when
-/// it cannot be read. No conflict or maximality check (validate_surface_packing).
+/// it cannot be read. No conflict or maximality check (validate_packing).
 void read_surface_csv(const std::string& path, SurfacePacking& packing);
 
 /// True when every vertex of the mesh file (.off, .obj, .ply, .stl, read as for

@@ -156,6 +156,10 @@ bool SpaceGrid::any_in_box(Vec3 q, double R, Pred&& pred) const {
   return false;
 }
 
+/// The count at area fraction 1 on the surface: the integral of 4 / (pi r(x)^2), by the
+/// edge-midpoint rule on every triangle (A / (pi r^2 / 4) for one radius).
+double density_unit(const SurfacePacking& packing);
+
 template <class F>
 void SurfacePacking::for_each_near(Vec3 q, double R, F&& f) const {
   const double R2 = R * R;

@@ -1,29 +1,21 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Sampling and density tuning on a curved surface (paper, section 7.2): maximal
-// Poisson-disk sampling, void and repeller injection, sifted and attractor ejection,
-// with the surface void points (surface_voids.h) in place of planar corners. Open
-// boundary curves are sampled first with fixed disks (1D maximal sampling) and stay.
+// Density tuning on a curved surface (paper, section 7.2): void and repeller injection,
+// sifted and attractor ejection, crystal growth, with the surface void points
+// (surface_voids.h) in place of planar corners. The fixed disks of open boundary curves
+// stay. Sampling the surface is surface_sampling.h's (included here: tuning starts from it).
 #pragma once
 
 #include <cstddef>
 #include <functional>
-#include <memory>
 
 #include "disktune/random.h"
 #include "disktune/surface_packing.h"
+#include "disktune/surface_sampling.h"
 #include "disktune/tuning.h"
 
 namespace disktune {
 
-/// A maximal Poisson-disk sample of the surface: the open boundary curves first (1D,
-/// fixed disks), then darts over the surface by area, then every void filled at its
-/// void points until none is left. Conflict-free and maximal.
-SurfacePacking sample_surface_mps(std::shared_ptr<const SurfaceDomain> domain,
-                                  const SurfaceSizing& sizing, Rng& rng);
-
-/// The count at area fraction 1 on the surface: the integral of 4 / (pi r(x)^2).
-double density_unit(const SurfacePacking& packing);
-/// The count a target means on the surface.
+/// The count a target means on the surface (density_unit in surface_packing.h).
 std::size_t target_count(const Target& target, const SurfacePacking& packing);
 
 /// Tunes the count to the target as tune() does in the plane, with the surface's

@@ -49,11 +49,11 @@ bool is_conflict_free(const SurfacePacking& packing);
 
 /// Throws InvalidInput unless the packing is non-empty, conflict-free and maximal,
 /// naming a conflicting pair or an uncovered point; `what` names the input.
-void validate_surface_packing(const SurfacePacking& packing, const std::string& what);
+void validate_packing(const SurfacePacking& packing, const std::string& what);
 
 /// What makes the packing invalid, as a phrase naming the place (a conflicting pair, an
 /// uncovered point and its triangle, no disks); empty when it is conflict-free and
-/// maximal. The exact checks of validate_surface_packing.
+/// maximal. The exact checks of validate_packing.
 std::string packing_defect(const SurfacePacking& packing);
 
 }  // namespace disktune

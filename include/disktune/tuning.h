@@ -33,11 +33,8 @@ struct Target {
 /// InvalidInput for a target that is not finite and positive, or above the densest
 /// (hexagonal) packing.
 std::size_t target_count(const Target& target, double r, double area);
-/// The count at area fraction 1 for a packing in a domain of the given area: A / (pi r^2
-/// / 4) for one radius, the integral of 4 / (pi r(x)^2) with a sizing (then "area
-/// fraction" is this relative density: docs/sizing.md).
-double density_unit(const Packing& packing, double area);
-/// The count a target means where `unit` disks make area fraction 1 (density_unit).
+/// The count a target means where `unit` disks make area fraction 1 (density_unit in
+/// packing.h).
 std::size_t target_count_for_unit(const Target& target, double unit);
 /// The count a target means for this packing (its radius or its sizing).
 std::size_t target_count(const Target& target, const Packing& packing, double area);

@@ -14,6 +14,7 @@
 #include "disktune/io.h"
 #include "disktune/sampling.h"
 #include "disktune/surface_io.h"
+#include "disktune/surface_sampling.h"
 #include "disktune/surface_tuning.h"
 #include "disktune/surface_voids.h"
 #include "disktune/voids.h"
@@ -21,6 +22,39 @@
 namespace disktune::cli {
 
 namespace {
+
+// The library says what is wrong and what to do in its own terms; the command adds its
+// flags. An InvalidInput from `call` comes back with the option the call read
+// (`option`, e.g. "--sizing", or empty) in place of the library's name for it when the
+// message opens with that name ("sizing \"0.0x\": ..." becomes "--sizing \"0.0x\": ..."),
+// else in front of the message, and with the flag for what the message asks to change
+// (InvalidInput::remedy) at the end: "...; give the radius the packing was made with,
+// 0.03 (--radius 0.03)".
+std::string in_flags(const InvalidInput& e, const std::string& option) {
+  std::string text = e.what();
+  if (!option.empty()) {
+    const std::string name = option.substr(2) + " ";
+    text = text.compare(0, name.size(), name) == 0 ? option + text.substr(name.size() - 1) : option + ": " + text;
+  }
+  switch (e.remedy()) {
+    case InvalidInput::Remedy::none: break;
+    case InvalidInput::Remedy::radius: text += " (--radius" + (e.value().empty() ? "" : " " + e.value()) + ")"; break;
+    case InvalidInput::Remedy::sizing: text += " (--sizing)"; break;
+    case InvalidInput::Remedy::domain: text += " (--domain)"; break;
+    case InvalidInput::Remedy::box_size: text += " (--width, --height)"; break;
+    case InvalidInput::Remedy::sample: text += " ('disktune sample')"; break;
+  }
+  return text;
+}
+
+template <class Call>
+auto with_flags(const std::string& option, Call&& call) -> decltype(call()) {
+  try {
+    return call();
+  } catch (const InvalidInput& e) {
+    throw InvalidInput(in_flags(e, option));
+  }
+}
 
 std::string lower_extension(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
@@ -45,7 +79,8 @@ CommandDomain open_surface(const DomainArgs& args) {
     d.radius = args.radius;
     d.surface_sizing = std::make_shared<const SurfaceSizing>(SurfaceSizing::constant(args.radius));
   } else {
-    d.surface_sizing = std::make_shared<const SurfaceSizing>(parse_surface_sizing(args.sizing, *d.surface));
+    d.surface_sizing = std::make_shared<const SurfaceSizing>(
+        with_flags("--sizing", [&] { return parse_surface_sizing(args.sizing, *d.surface); }));
   }
   // A maximal sample holds about 0.55 A / (pi r^2 / 4) disks: refuse, before any grid is
   // built, radii so small that it could not fit in memory.
@@ -106,7 +141,7 @@ CommandDomain open_domain(const DomainArgs& args) {
     d.box ? d.box->validate_radius(d.radius) : d.planar->validate_radius(d.radius);
     d.unit = density_unit(d.empty_packing(), d.area());
   } else {
-    d.sizing = std::make_shared<const Sizing>(parse_sizing(args.sizing, d.planar));
+    d.sizing = std::make_shared<const Sizing>(with_flags("--sizing", [&] { return parse_sizing(args.sizing, d.planar); }));
     SizingStats stats;  // sampling the sizing refuses L >= 1/2
     d.unit = density_unit(sized_packing(d.box ? d.box->frame() : d.planar->frame(), d.planar, d.sizing, &stats),
                           d.area());
@@ -178,9 +213,11 @@ Packing CommandDomain::sample(Rng& rng) const {
 
 Packing CommandDomain::read(const std::string& csv, bool check) const {
   Packing packing = empty_packing();
-  read_packing_csv(csv, packing);
-  if (planar) boundary_loops(packing, *planar);
-  if (check) validate_packing(packing, csv);
+  with_flags("", [&] {
+    read_packing_csv(csv, packing);
+    if (planar) boundary_loops(packing, *planar);
+    if (check) validate_packing(packing, csv);
+  });
   return packing;
 }
 
@@ -195,13 +232,15 @@ SurfacePacking CommandDomain::empty_surface_packing() const {
 }
 
 SurfacePacking CommandDomain::sample_surface(Rng& rng) const {
-  return sample_surface_mps(surface, *surface_sizing, rng);
+  return sample_mps(surface, *surface_sizing, rng);
 }
 
 SurfacePacking CommandDomain::read_surface(const std::string& csv, bool check) const {
   SurfacePacking packing = empty_surface_packing();
-  read_surface_csv(csv, packing);
-  if (check) validate_surface_packing(packing, csv);
+  with_flags("", [&] {
+    read_surface_csv(csv, packing);
+    if (check) validate_packing(packing, csv);
+  });
   return packing;
 }
 

@@ -10,7 +10,6 @@
 #include "disktune/density.h"
 #include "disktune/errors.h"
 #include "disktune/tolerance.h"
-#include "disktune/tuning.h"
 #include "disktune/voids.h"
 #include "mesh_shape.h"
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The simple sizing functions and the command line's --sizing dispatch. Expressions and
-// grid files have their own files.
+// The simple sizing functions and parse_sizing, which tells the kinds of sizing apart in
+// one text. Expressions and grid files have their own files.
 #include "disktune/sizing.h"
 
 #include <algorithm>
@@ -22,9 +22,10 @@ using detail::trimmed;
 Sizing parse_boundary(const std::string& spec, const std::string& args,
                       std::shared_ptr<const PlanarDomain> domain) {
   if (!domain) {
-    throw InvalidInput("--sizing " + spec +
-                       ": boundary grading needs a planar --domain (on a periodic box there is "
-                       "no boundary); give --domain, or use a number or an expression in x and y");
+    throw InvalidInput("sizing \"" + spec +
+                           "\": boundary grading needs a planar domain (on a periodic box there is "
+                           "no boundary); give a planar domain, or use a number or an expression in x and y",
+                       InvalidInput::Remedy::domain);
   }
   std::vector<std::string> parts;
   for (std::size_t start = 0;;) {
@@ -36,8 +37,8 @@ Sizing parse_boundary(const std::string& spec, const std::string& args,
   double v[3];
   if (parts.size() != 3 || !parse_number(parts[0], v[0]) || !parse_number(parts[1], v[1]) ||
       !parse_number(parts[2], v[2])) {
-    throw InvalidInput("--sizing " + spec +
-                       ": expected boundary:RMIN,RMAX,G with three numbers, e.g. "
+    throw InvalidInput("sizing \"" + spec +
+                       "\": expected boundary:RMIN,RMAX,G with three numbers, e.g. "
                        "boundary:0.005,0.05,0.2");
   }
   return boundary_grading_sizing(std::move(domain), v[0], v[1], v[2]);
@@ -77,12 +78,12 @@ Sizing parse_sizing(const std::string& spec, std::shared_ptr<const PlanarDomain>
   const std::string text = trimmed(spec);
   if (text.empty()) {
     throw InvalidInput(
-        "--sizing is empty: give a radius (0.01), boundary:RMIN,RMAX,G, a grid file, or an "
+        "the sizing is empty: give a radius (0.01), boundary:RMIN,RMAX,G, a grid file, or an "
         "expression in x and y (\"0.01 + 0.02*x\")");
   }
   double r = 0;
   if (parse_number(text, r)) {
-    if (!(r > 0)) throw InvalidInput("--sizing " + text + ": a constant radius must be positive");
+    if (!(r > 0)) throw InvalidInput("sizing \"" + text + "\": a constant radius must be positive");
     return constant_sizing(r);
   }
   const std::string prefix = "boundary:";
@@ -96,7 +97,7 @@ Sizing parse_sizing(const std::string& spec, std::shared_ptr<const PlanarDomain>
   } catch (const InvalidInput& e) {
     // Most likely a mistyped file name: say so before the parser's complaint.
     if (text.find('/') != std::string::npos || text.find('\\') != std::string::npos) {
-      throw InvalidInput("--sizing " + text + ": no such file, and as an expression: " + e.what());
+      throw InvalidInput("sizing \"" + text + "\": no such file, and as an expression: " + e.what());
     }
     throw;
   }

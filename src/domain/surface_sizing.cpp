@@ -42,18 +42,18 @@ SurfaceSizing parse_curvature(const std::string& spec, const std::string& args,
   if (comma == std::string::npos || args.find(',', comma + 1) != std::string::npos ||
       !parse_number(trimmed(args.substr(0, comma)), options.r_min) ||
       !parse_number(trimmed(args.substr(comma + 1)), options.r_max)) {
-    throw InvalidInput("--sizing " + spec +
-                       ": expected curvature:RMIN,RMAX with two numbers, e.g. "
+    throw InvalidInput("sizing \"" + spec +
+                       "\": expected curvature:RMIN,RMAX with two numbers, e.g. "
                        "curvature:0.01,0.1 (or plain \"curvature\" for the defaults)");
   }
-  // 0 would silently mean "default" in the options; on the command line it is a mistake.
+  // 0 would silently mean "default" in the options; written out, it is a mistake.
   if (!(options.r_min > 0) || !(options.r_max > 0)) {
-    throw InvalidInput("--sizing " + spec + ": RMIN and RMAX must be positive");
+    throw InvalidInput("sizing \"" + spec + "\": RMIN and RMAX must be positive");
   }
   try {
     return curvature_sizing(domain, options);
   } catch (const InvalidInput& e) {
-    throw InvalidInput("--sizing " + spec + ": " + e.what());
+    throw InvalidInput("sizing \"" + spec + "\": " + e.what());
   }
 }
 
@@ -167,12 +167,12 @@ SurfaceSizing parse_surface_sizing(const std::string& spec, const SurfaceDomain&
   const std::string text = trimmed(spec);
   if (text.empty()) {
     throw InvalidInput(
-        "--sizing is empty: give a radius (0.01), \"curvature\", curvature:RMIN,RMAX, or an "
+        "the sizing is empty: give a radius (0.01), \"curvature\", curvature:RMIN,RMAX, or an "
         "expression in x, y and z (\"0.01 + 0.02*z\")");
   }
   double r = 0;
   if (parse_number(text, r)) {
-    if (!(r > 0)) throw InvalidInput("--sizing " + text + ": a constant radius must be positive");
+    if (!(r > 0)) throw InvalidInput("sizing \"" + text + "\": a constant radius must be positive");
     return SurfaceSizing::constant(r);
   }
   if (text == "curvature") return curvature_sizing(domain);

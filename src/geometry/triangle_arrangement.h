@@ -7,13 +7,17 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
-#include "disktune/spatial_grid.h"
 #include "disktune/surface_geometry.h"
 
 namespace disktune {
 
+/// A ball's tag is the id of the disk it stands for. The packing layer (spatial_grid.h)
+/// declares the same alias; a second declaration must name the same type, so the two
+/// cannot drift apart where both are seen.
+using DiskId = std::uint32_t;
 /// The tag of no ball (the value of kNoDisk, which lives a layer up).
 inline constexpr DiskId kNoTag = static_cast<DiskId>(-1);
 

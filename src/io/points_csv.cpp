@@ -122,20 +122,22 @@ void read_packing_csv(const std::string& path, Packing& packing) {
       where << "center (" << p.x << ", " << p.y << ") lies outside the ";
       if (packing.domain()) {
         where << "domain; give the domain the packing was made for";
-      } else {
-        where << f.extent.x << " x " << f.extent.y << " box; give the box with --width and --height";
+        throw InvalidInput(where.str(), InvalidInput::Remedy::domain);
       }
-      throw InvalidInput(where.str());
+      where << f.extent.x << " x " << f.extent.y << " box; give the width and height of the box the packing "
+            << "was made for";
+      throw InvalidInput(where.str(), InvalidInput::Remedy::box_size);
     }
     const double r = packing.radius_at(c);
     if (std::abs(p.r - r) > kRelTol * r) {
       where << "radius " << p.r << " differs from the radius " << r << " asked for at its center";
       if (packing.sizing()) {
         where << " by the sizing " << packing.sizing()->description() << "; give the sizing it was made with";
-      } else {
-        where << "; disktune tunes uniform-radius packings: pass --radius " << p.r;
+        throw InvalidInput(where.str(), InvalidInput::Remedy::sizing);
       }
-      throw InvalidInput(where.str());
+      // Without a sizing every disk has the one radius asked for.
+      where << "; give the radius the packing was made with, " << detail::number_text(p.r);
+      throw InvalidInput(where.str(), InvalidInput::Remedy::radius, detail::number_text(p.r));
     }
     packing.insert(c, r);
   }

@@ -82,19 +82,18 @@ void read_surface_csv(const std::string& path, SurfacePacking& packing) {
       } else {
         where << "farther than " << reach << " from the surface";
       }
-      where << ", more than 1e-6 r; give the surface the samples were made on (--domain)";
-      throw InvalidInput(where.str());
+      where << ", more than 1e-6 r; give the surface the samples were made on";
+      throw InvalidInput(where.str(), InvalidInput::Remedy::domain);
     }
     if (std::abs(r_given - r) > kRadiusMatch * r) {
       where << "radius " << r_given << " differs from the radius " << r;
       if (packing.sizing().is_constant()) {
-        where << " asked for; give the radius the samples were made with (--radius " << r_given
-              << ")";
-      } else {
-        where << " the sizing " << packing.sizing().description() << " gives at " << detail::point_text(p)
-              << "; give the sizing the samples were made with";
+        where << " asked for; give the radius the samples were made with, " << detail::number_text(r_given);
+        throw InvalidInput(where.str(), InvalidInput::Remedy::radius, detail::number_text(r_given));
       }
-      throw InvalidInput(where.str());
+      where << " the sizing " << packing.sizing().description() << " gives at " << detail::point_text(p)
+            << "; give the sizing the samples were made with";
+      throw InvalidInput(where.str(), InvalidInput::Remedy::sizing);
     }
     // A disk on an open boundary edge is a boundary disk: fixed, as sampling made it.
     std::uint8_t flags = 0;

@@ -85,4 +85,10 @@ bool Packing::covered(Vec2 q, DiskId ignore) const {
   });
 }
 
+double density_unit(const Packing& packing, double area) {
+  constexpr double kPi = 3.14159265358979323846;
+  if (!packing.sizing()) return 4 * area / (kPi * packing.max_radius() * packing.max_radius());
+  return density_integral(*packing.sizing(), packing.frame(), packing.domain());
+}
+
 }  // namespace disktune

@@ -92,8 +92,8 @@ BoundaryLoops boundary_loops(Packing& packing, const PlanarDomain& domain) {
       std::ostringstream msg;
       msg << "no disk on corner " << s.index << " of boundary loop " << s.loop << " at (" << s.a.x
           << ", " << s.a.y << "): a packing of a planar domain has a disk on every corner; "
-          << "sample it with 'disktune sample --domain ...'";
-      throw InvalidInput(msg.str());
+          << "start from a sample of the domain";
+      throw InvalidInput(msg.str(), InvalidInput::Remedy::sample);
     }
     for (const auto& [t, id] : on) {
       packing.set_flags(id, packing.flags(id) | kFixed);

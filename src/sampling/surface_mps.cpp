@@ -6,7 +6,7 @@
 #include <algorithm>
 
 #include "disktune/errors.h"
-#include "disktune/surface_tuning.h"
+#include "disktune/surface_sampling.h"
 #include "disktune/surface_voids.h"
 #include "disktune/tolerance.h"
 #include "../voids/final_check.h"
@@ -74,7 +74,7 @@ void sample_boundary(SurfacePacking& packing, Rng& rng) {
 
 }  // namespace
 
-SurfacePacking sample_surface_mps(std::shared_ptr<const SurfaceDomain> domain, const SurfaceSizing& sizing, Rng& rng) {
+SurfacePacking sample_mps(std::shared_ptr<const SurfaceDomain> domain, const SurfaceSizing& sizing, Rng& rng) {
   SurfacePacking packing(std::move(domain), sizing);
   sample_boundary(packing, rng);
   // Darts: about twice the count at area fraction 1 (an MPS reaches about half of it).

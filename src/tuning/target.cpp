@@ -2,9 +2,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "disktune/density.h"
 #include "disktune/errors.h"
-#include "disktune/sizing.h"
 #include "disktune/tuning.h"
 
 namespace disktune {
@@ -56,11 +54,6 @@ std::size_t target_count_for_unit(const Target& target, double unit) { return co
 
 std::size_t target_count(const Target& target, double r, double area) {
   return count_for(target, 4 * area / (kPi * r * r));
-}
-
-double density_unit(const Packing& packing, double area) {
-  if (!packing.sizing()) return 4 * area / (kPi * packing.max_radius() * packing.max_radius());
-  return density_integral(*packing.sizing(), packing.frame(), packing.domain());
 }
 
 std::size_t target_count(const Target& target, const Packing& packing, double area) {

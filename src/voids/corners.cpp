@@ -149,7 +149,8 @@ void validate_packing(const Packing& packing, const std::string& what) {
   if (defect.empty()) return;
   // A hole is what a packing made by other means most often has: say how to get one.
   const bool hole = defect.rfind("not maximal", 0) == 0;
-  throw InvalidInput(what + ": " + defect + (hole ? "; start from a maximal sample ('disktune sample')" : ""));
+  if (hole) throw InvalidInput(what + ": " + defect + "; start from a maximal sample", InvalidInput::Remedy::sample);
+  throw InvalidInput(what + ": " + defect);
 }
 
 bool is_maximal(const Packing& packing) {

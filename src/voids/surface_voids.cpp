@@ -222,10 +222,11 @@ std::string packing_defect(const SurfacePacking& packing) {
   return "";
 }
 
-void validate_surface_packing(const SurfacePacking& packing, const std::string& what) {
+void validate_packing(const SurfacePacking& packing, const std::string& what) {
   const std::string defect = packing_defect(packing);
   if (defect.empty()) return;
-  throw InvalidInput(what + ": " + defect + (packing.empty() ? "" : "; sample the surface again"));
+  if (packing.empty()) throw InvalidInput(what + ": " + defect);
+  throw InvalidInput(what + ": " + defect + "; sample the surface again", InvalidInput::Remedy::sample);
 }
 
 }  // namespace disktune

@@ -27,7 +27,7 @@ RemeshResult remesh(std::shared_ptr<const SurfaceDomain> surface, std::size_t ve
     throw InvalidInput("remesh: " + std::to_string(vertex_count) + " vertices are too many: " + e.what());
   }
   Rng rng(options.seed);
-  SurfacePacking packing = sample_surface_mps(surface, SurfaceSizing::constant(out.radius), rng);
+  SurfacePacking packing = sample_mps(surface, SurfaceSizing::constant(out.radius), rng);
   out.tuning = tune(packing, Target::count(vertex_count), rng, options.tune);
 
   std::vector<Vec3> samples;

@@ -1,0 +1,19 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Maximal Poisson-disk sampling of a curved surface (paper, section 7.2). Open boundary
+// curves are sampled first with fixed disks (1D maximal sampling) and stay.
+#pragma once
+
+#include <memory>
+
+#include "disktune/random.h"
+#include "disktune/surface_packing.h"
+
+namespace disktune {
+
+/// A maximal Poisson-disk sample of the surface: the open boundary curves first (1D,
+/// fixed disks), then darts over the surface by area, then every void filled at its
+/// void points until none is left. Conflict-free and maximal.
+SurfacePacking sample_mps(std::shared_ptr<const SurfaceDomain> domain,
+                                  const SurfaceSizing& sizing, Rng& rng);
+
+}  // namespace disktune
