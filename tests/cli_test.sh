@@ -46,6 +46,9 @@ expect nan-radius 2 "radius must be" -- "$bin" sample --radius nan --output z.cs
 expect big-radius 2 "meet its own periodic image" -- "$bin" sample --radius 0.5 --output z.csv
 absent big-radius-output z.csv
 expect tiny-radius 2 "too small" -- "$bin" sample --radius 1e-7 --output z.csv
+# A job larger than the memory it may use: a clear message and exit 2, no file.
+expect out-of-memory 2 "out of memory" -- bash -c 'ulimit -v 400000 && exec "$0" "$@"' "$bin" sample --radius 0.0002 --output z.csv
+absent out-of-memory-output z.csv
 expect bad-box 2 "width and height must be" -- "$bin" sample --width -1 --radius 0.1
 expect no-radius 2 "radius" -- "$bin" sample --output z.csv
 expect unknown-option 2 "--frobnicate|frobnicate" -- "$bin" sample --radius 0.1 --frobnicate

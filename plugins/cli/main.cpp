@@ -3,6 +3,7 @@
 // flags onto library calls; errors become one clear line and a distinct exit code.
 #include <CLI/CLI.hpp>
 #include <iostream>
+#include <new>
 
 #include "commands.h"
 #include "disktune/errors.h"
@@ -39,6 +40,12 @@ int main(int argc, char** argv) {
   } catch (const disktune::IoError& e) {
     std::cerr << "disktune: error: " << e.what() << "\n";
     return kExitIo;
+  } catch (const std::bad_alloc&) {
+    // Not a bug: the job is larger than this machine's memory. No output was replaced
+    // (every file is written whole or not at all).
+    std::cerr << "disktune: error: out of memory: the job needs more memory than this machine "
+                 "has; use a larger radius, a smaller domain or a lower target\n";
+    return kExitUsage;
   } catch (const std::exception& e) {
     std::cerr << "disktune: internal error: " << e.what() << "\n";
     return kExitInternal;

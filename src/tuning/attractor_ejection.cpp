@@ -7,8 +7,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "disktune/surface_tuning.h"
 #include "disktune/tuning.h"
 #include "attractor_rings.h"
+#include "surface_repair.h"
 #include "void_repair.h"
 
 namespace disktune {
@@ -110,14 +112,30 @@ std::size_t attractor_eject(UndoLog& log, Packing& packing, DiskId p, Rng& rng, 
 
 }  // namespace detail
 
-std::size_t attractor_eject(Packing& packing, DiskId p, Rng& rng, std::size_t max_removed) {
-  detail::UndoLog log(packing);
-  return detail::attractor_eject(log, packing, p, rng, max_removed, 1);
+namespace {
+
+// One attractor step as a single operation, for either packing kind (the surface's
+// geometry is in surface_ejection.cpp): its edits in one log, which the step itself takes
+// back when it fails.
+template <class P>
+std::size_t attract(P& packing, DiskId p, Rng& rng, std::size_t max_removed, int rings) {
+  detail::BasicUndoLog<P> log(packing);
+  return detail::attractor_eject(log, packing, p, rng, max_removed, rings);
 }
 
+}  // namespace
+
+std::size_t attractor_eject(Packing& packing, DiskId p, Rng& rng, std::size_t max_removed) {
+  return attract(packing, p, rng, max_removed, 1);
+}
 std::size_t wide_attractor_eject(Packing& packing, DiskId p, Rng& rng, std::size_t max_removed) {
-  detail::UndoLog log(packing);
-  return detail::attractor_eject(log, packing, p, rng, max_removed, detail::kWideAttractorRings);
+  return attract(packing, p, rng, max_removed, detail::kWideAttractorRings);
+}
+std::size_t attractor_eject(SurfacePacking& packing, DiskId p, Rng& rng, std::size_t max_removed) {
+  return attract(packing, p, rng, max_removed, 1);
+}
+std::size_t wide_attractor_eject(SurfacePacking& packing, DiskId p, Rng& rng, std::size_t max_removed) {
+  return attract(packing, p, rng, max_removed, detail::kWideAttractorRings);
 }
 
 }  // namespace disktune

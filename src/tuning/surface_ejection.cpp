@@ -114,14 +114,6 @@ std::size_t attractor_eject(SurfaceUndoLog& log, SurfacePacking& packing, DiskId
 
 }  // namespace detail
 
-std::size_t attractor_eject(SurfacePacking& packing, DiskId p, Rng& rng, std::size_t max_removed) {
-  detail::SurfaceUndoLog log(packing);
-  return detail::attractor_eject(log, packing, p, rng, max_removed, 1);
-}
-
-std::size_t wide_attractor_eject(SurfacePacking& packing, DiskId p, Rng& rng, std::size_t max_removed) {
-  detail::SurfaceUndoLog log(packing);
-  return detail::attractor_eject(log, packing, p, rng, max_removed, detail::kWideAttractorRings);
-}
+// The single attractor operations (one and three rings) are in attractor_ejection.cpp.
 
 }  // namespace disktune
