@@ -364,6 +364,37 @@ TEST(UndoLog, RevertRestoresTheExactPacking) {
   EXPECT_EQ(snapshot(), before);
 }
 
+// An exception in the middle of an operation: its log takes the edits back on the way out.
+TEST(UndoLog, AnExceptionTakesTheEditsBack) {
+  const PeriodicBox box;
+  Rng rng(9);
+  Packing p = sample_mps(box, 0.05, rng);
+  auto snapshot = [&] {
+    std::vector<std::tuple<double, double, double, int>> s;
+    for (DiskId id : p.ids()) s.emplace_back(p.center(id).x, p.center(id).y, p.radius(id), p.flags(id));
+    std::sort(s.begin(), s.end());
+    return s;
+  };
+  const auto start = snapshot();
+  try {
+    detail::UndoLog log(p);
+    for (int k = 0; k < 50; ++k) {
+      const std::vector<DiskId> ids = p.ids();
+      log.move(ids[uniform_index(rng, ids.size())], box.random_point(rng));
+      log.remove(ids[uniform_index(rng, ids.size())]);
+      log.insert(box.random_point(rng), 0.05);
+    }
+    throw std::runtime_error("cut short");
+  } catch (const std::runtime_error&) {
+  }
+  EXPECT_EQ(snapshot(), start);
+  {  // leaving normally keeps the edits
+    detail::UndoLog log(p);
+    log.remove(p.ids().front());
+  }
+  EXPECT_EQ(snapshot().size(), start.size() - 1);
+}
+
 // The repeller's choice (paper 2.2, 6.1.2): the largest |c - point| - r(c), not the
 // farthest point, so a point a smaller disk reaches can win; the first of equals wins.
 TEST(RepellerChoice, TheLargestWeightedDistanceWins) {

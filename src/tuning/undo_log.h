@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Edits of a packing made through an UndoLog can be taken back, newest first. Tuning
 // operations use it to try a move and keep it only when it serves the target (never
-// past the exact count, never lowering the count in an injection phase).
+// past the exact count, never lowering the count in an injection phase), and it takes
+// them back by itself when an exception cuts an operation short.
 #pragma once
 
+#include <exception>
 #include <utility>
 #include <vector>
 
@@ -24,7 +26,19 @@ template <class P>
 class BasicUndoLog {
  public:
   using Point = decltype(position_of(std::declval<const P&>(), DiskId{}));
-  explicit BasicUndoLog(P& packing) : packing_(packing) {}
+  explicit BasicUndoLog(P& packing) : packing_(packing), unwinding_(std::uncaught_exceptions()) {}
+  BasicUndoLog(const BasicUndoLog&) = delete;
+  BasicUndoLog& operator=(const BasicUndoLog&) = delete;
+  /// An operation cut short by an exception is taken back: every single operation is a
+  /// transaction. (Leaving normally keeps the edits, as commit() does.) Should putting
+  /// a disk back fail too (out of memory), nothing more can be done while unwinding.
+  ~BasicUndoLog() {
+    if (std::uncaught_exceptions() <= unwinding_) return;
+    try {
+      revert();
+    } catch (...) {
+    }
+  }
 
   DiskId insert(const Point& c, double r, std::uint8_t flags = 0) {
     const DiskId id = insert_at(packing_, c, r, flags);
@@ -95,6 +109,7 @@ class BasicUndoLog {
   }
 
   P& packing_;
+  int unwinding_;  // exceptions in flight when the log was opened
   std::vector<Edit> edits_;
 };
 
