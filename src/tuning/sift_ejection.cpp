@@ -1,75 +1,68 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Sifted-disks ejection (Ebeida et al., "Sifted disks", EG 2013; the paper's analogue
-// of void injection): replace two overlapping disks by one placed where it alone
-// covers what they covered, outside every other disk.
+// of void injection, and 7.2 on surfaces), once for the plane and surfaces (space.h):
+// a disk nothing needs goes; otherwise p and an overlapping neighbour are replaced by one
+// disk placed where it alone covers what they covered, outside every other disk.
 #include <algorithm>
+#include <vector>
 
+#include "disktune/surface_tuning.h"
 #include "disktune/tuning.h"
-#include "void_repair.h"
+#include "space.h"
 
 namespace disktune {
 namespace {
 
-// A point whose disk holds every corner, outside every disk, or nothing: uniform darts
-// into the box around the corners' common disk D(c, r) intersection first (keeps the
-// result random), then the center of their smallest enclosing circle.
-bool replacement(const Packing& packing, const std::vector<Corner>& corners, Rng& rng, Vec2& z) {
-  const double r = packing.max_radius();  // the box below holds every candidate
-  Vec2 lo{-1e300, -1e300}, hi{1e300, 1e300};
-  for (const Corner& c : corners) {
-    lo = {std::max(lo.x, c.point.x - r), std::max(lo.y, c.point.y - r)};
-    hi = {std::min(hi.x, c.point.x + r), std::min(hi.y, c.point.y + r)};
+template <class P>
+std::size_t sift_in(P& packing, DiskId p, Rng& rng, std::size_t max_removed) {
+  using S = detail::Space<P>;
+  if (max_removed == 0 || (packing.flags(p) & (kFixed | kFrozen))) return 0;
+  const double r = packing.radius(p);
+  const auto c = packing.center(p);
+  const double reach = S::void_reach(r);
+  detail::BasicUndoLog<P> log(packing);
+  // p alone: the others may already cover all it did.
+  if (S::voids_in(packing, c, reach, {p}).empty()) {
+    log.remove(p);
+    if (S::void_free_near(packing, c, r)) return 1;
+    log.revert();
   }
-  if (lo.x > hi.x || lo.y > hi.y) return false;
-  auto fits = [&](Vec2 x) {
-    return !packing.conflicts(x) && detail::covers_all(packing, x, corners);
-  };
-  for (int t = 0; t < 32; ++t) {
-    z = {lo.x + uniform01(rng) * (hi.x - lo.x), lo.y + uniform01(rng) * (hi.y - lo.y)};
-    if (fits(z)) return true;
+  for (const auto& q : S::mobile_neighbors(packing, c, r, p, rng)) {
+    if (!packing.alive(q.id)) continue;
+    // The void the pair leaves lies in D(p) and D(q).
+    auto voids = S::voids_in(packing, c, reach, {p, q.id});
+    const auto more = S::voids_in(packing, q.image, S::void_reach(q.radius), {p, q.id});
+    voids.insert(voids.end(), more.begin(), more.end());
+    log.remove(p);
+    if (voids.empty()) {  // p may not be needed beside q
+      if (S::void_free_near(packing, c, r)) return 1;
+      log.revert();
+      continue;
+    }
+    log.remove(q.id);
+    typename S::Point z;
+    const double search = 0.5 * norm(c - q.image) + std::max(r, q.radius);
+    if (!S::covering_point(packing, voids, (c + q.image) * 0.5, search, rng, z)) {
+      log.revert();
+      continue;
+    }
+    log.insert(z, packing.radius_at(z));
+    // Exact check of the two regions: the void points bound the void only when its arcs
+    // are short, and this does not rely on it.
+    if (S::void_free_near(packing, c, r) && S::void_free_near(packing, q.image, q.radius)) return 1;
+    log.revert();
   }
-  std::vector<Vec2> points;
-  for (const Corner& c : corners) points.push_back(c.point);
-  const Circle mec = min_enclosing_circle(points);
-  z = mec.center;
-  return fits(z);
+  return 0;
 }
 
 }  // namespace
 
 std::size_t sift_eject(Packing& packing, DiskId p, Rng& rng, std::size_t max_removed) {
-  if (max_removed == 0 || (packing.flags(p) & (kFixed | kFrozen))) return 0;
-  const double r = packing.radius(p);
-  const Vec2 pc = packing.center(p);
-  const std::vector<Neighbor> near = detail::mobile_neighbors(packing, pc, p, rng);
+  return sift_in(packing, p, rng, max_removed);
+}
 
-  std::vector<Corner> corners;
-  for (const Neighbor& q : near) {
-    if (!packing.alive(q.id)) continue;
-    // The void the pair leaves lies in D(p) and D(q).
-    corners.clear();
-    corners_in_region(packing, pc, r, {p, q.id}, corners);
-    corners_in_region(packing, q.image, q.radius, {p, q.id}, corners);
-    detail::UndoLog log(packing);
-    log.remove(p);
-    if (corners.empty()) {  // p may not be needed at all
-      if (detail::void_free_near(packing, pc, r)) return 1;
-      log.revert();
-      continue;
-    }
-    log.remove(q.id);
-    Vec2 z;
-    if (!replacement(packing, corners, rng, z)) {
-      log.revert();
-      continue;
-    }
-    log.insert(z, packing.radius_at(z));
-    // Exact check of the two regions: the corners bound the void only when its arcs
-    // are short, and this does not rely on it.
-    if (detail::void_free_near(packing, pc, r) && detail::void_free_near(packing, q.image, q.radius)) return 1;
-    log.revert();
-  }
-  return 0;
+std::size_t sift_eject(SurfacePacking& packing, DiskId p, Rng& rng, std::size_t max_removed) {
+  return sift_in(packing, p, rng, max_removed);
 }
 
 }  // namespace disktune

@@ -16,6 +16,9 @@
 //   covers_all(P, x, voids)    a disk at x holds every void point
 //   mobile_neighbors(P, c, r, self, rng)  movable disks overlapping a disk (c, r)
 //   repair_void(log, P, c, R, rng, max)   fill the voids within R of c
+//   void_free_near(P, c, r)    no void within D(c, r): the exact check after a change
+//   covering_point(P, voids, near, R, rng, z)  a random place within R of `near` where
+//                    one disk covers every void point and meets no disk
 // The primitives themselves are in void_repair.h / surface_repair.h.
 #pragma once
 
@@ -66,6 +69,14 @@ struct Space<Packing> {
                                  std::size_t max_added) {
     return detail::repair_void(log, packing, c, R, rng, max_added);
   }
+  static bool void_free_near(const Packing& packing, Location c, double r) {
+    return detail::void_free_near(packing, c, r);
+  }
+  // The darts go where every corner is in reach, so `near` and R are not needed.
+  static bool covering_point(const Packing& packing, const std::vector<VoidPoint>& voids, Location /*near*/,
+                             double /*R*/, Rng& rng, Point& z) {
+    return detail::covering_point(packing, voids, rng, z);
+  }
 };
 
 /// A neighbour on a surface, named as the planar Neighbor is (no periodic images here).
@@ -105,6 +116,13 @@ struct Space<SurfacePacking> {
   static std::size_t repair_void(SurfaceUndoLog& log, const SurfacePacking& packing, Location c, double R,
                                  Rng& rng, std::size_t max_added) {
     return detail::repair_void(log, packing, c, R, rng, max_added);
+  }
+  static bool void_free_near(const SurfacePacking& packing, Location c, double r) {
+    return detail::void_free_near(packing, c, r);
+  }
+  static bool covering_point(const SurfacePacking& packing, const std::vector<VoidPoint>& voids, Location near,
+                             double R, Rng& rng, Point& z) {
+    return detail::covering_point(packing, voids, near, R, rng, z);
   }
 };
 

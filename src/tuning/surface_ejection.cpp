@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Sifted and attractor ejection on a surface (paper, 3, 3.1 and 7.2): as in the plane,
-// with covering positions found among the vertices of the balls around the void points.
+// Attractor ejection on a surface (paper, 3.1 and 7.2): as in the plane, with covering
+// positions found among the vertices of the balls around the void points. (Sifting is
+// one template for both spaces: sift_ejection.cpp.)
 #include <algorithm>
 #include <cmath>
 
@@ -9,47 +10,6 @@
 #include "surface_repair.h"
 
 namespace disktune {
-namespace {
-
-std::vector<SurfaceVoidPoint> joined(std::vector<SurfaceVoidPoint> a, const std::vector<SurfaceVoidPoint>& b) {
-  a.insert(a.end(), b.begin(), b.end());
-  return a;
-}
-
-}  // namespace
-
-std::size_t sift_eject(SurfacePacking& packing, DiskId p, Rng& rng, std::size_t max_removed) {
-  if ((packing.flags(p) & (kFixed | kFrozen)) || max_removed == 0) return 0;
-  const Vec3 cp = packing.center(p);
-  const double rp = packing.radius(p);
-  // p lone: its void alone may already be covered by the others.
-  if (detail::voids_near(packing, cp, detail::void_reach(rp), {p}).empty()) {
-    packing.remove(p);
-    return 1;
-  }
-  for (const DiskId q : detail::mobile_neighbors(packing, cp, rp, p, rng)) {
-    const Vec3 cq = packing.center(q);
-    const double rq = packing.radius(q);
-    const auto voids = joined(detail::voids_near(packing, cp, detail::void_reach(rp), {p, q}),
-                              detail::voids_near(packing, cq, detail::void_reach(rq), {p, q}));
-    const Vec3 mid = (cp + cq) * 0.5;
-    detail::SurfaceUndoLog log(packing);
-    log.remove(p);
-    log.remove(q);
-    const auto spots = detail::covering_positions(packing, voids, mid, 0.5 * norm(cp - cq) + std::max(rp, rq), kNoDisk);
-    if (spots.empty()) {
-      log.revert();
-      continue;
-    }
-    log.insert(spots[uniform_index(rng, spots.size())], 0);
-    // Exact check of the two regions: the void points bound the void only when its arcs
-    // are short, and this does not rely on it.
-    if (detail::void_free_near(packing, cp, rp) && detail::void_free_near(packing, cq, rq)) return 1;
-    log.revert();
-  }
-  return 0;
-}
-
 namespace detail {
 namespace {
 

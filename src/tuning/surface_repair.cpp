@@ -94,6 +94,14 @@ std::vector<SurfacePoint> covering_positions(const SurfacePacking& packing, cons
   return out;
 }
 
+bool covering_point(const SurfacePacking& packing, const std::vector<SurfaceVoidPoint>& voids, Vec3 near, double R,
+                    Rng& rng, SurfacePoint& z) {
+  const auto spots = covering_positions(packing, voids, near, R, kNoDisk);
+  if (spots.empty()) return false;
+  z = spots[uniform_index(rng, spots.size())];
+  return true;
+}
+
 std::vector<DiskId> mobile_neighbors(const SurfacePacking& packing, Vec3 point, double r, DiskId self, Rng& rng) {
   std::vector<DiskId> near;
   packing.for_each_near(point, r + packing.max_radius(), [&](DiskId j) {

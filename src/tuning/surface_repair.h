@@ -39,6 +39,11 @@ std::vector<SurfacePoint> covering_positions(const SurfacePacking& packing, cons
                                              Vec3 near, double R, DiskId self, DiskId passable = kNoDisk,
                                              const Vec3* toward = nullptr);
 
+/// One of the covering_positions within R of `near` that no disk holds, chosen at
+/// random, into `z`; false when there is none.
+bool covering_point(const SurfacePacking& packing, const std::vector<SurfaceVoidPoint>& voids, Vec3 near, double R,
+                    Rng& rng, SurfacePoint& z);
+
 /// The disks that can move (not fixed, not frozen) whose disk overlaps one of radius r at `point`,
 /// except `self`, in random order.
 std::vector<DiskId> mobile_neighbors(const SurfacePacking& packing, Vec3 point, double r, DiskId self, Rng& rng);

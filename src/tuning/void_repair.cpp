@@ -61,6 +61,28 @@ std::size_t repair_void(UndoLog& log, const Packing& packing, Vec2 center, doubl
   }
 }
 
+bool covering_point(const Packing& packing, const std::vector<Corner>& corners, Rng& rng, Vec2& z) {
+  const double r = packing.max_radius();  // the box below holds every candidate
+  Vec2 lo{-1e300, -1e300}, hi{1e300, 1e300};
+  for (const Corner& c : corners) {
+    lo = {std::max(lo.x, c.point.x - r), std::max(lo.y, c.point.y - r)};
+    hi = {std::min(hi.x, c.point.x + r), std::min(hi.y, c.point.y + r)};
+  }
+  if (lo.x > hi.x || lo.y > hi.y) return false;
+  auto fits = [&](Vec2 x) {
+    return !packing.conflicts(x) && covers_all(packing, x, corners);
+  };
+  for (int t = 0; t < 32; ++t) {
+    z = {lo.x + uniform01(rng) * (hi.x - lo.x), lo.y + uniform01(rng) * (hi.y - lo.y)};
+    if (fits(z)) return true;
+  }
+  std::vector<Vec2> points;
+  for (const Corner& c : corners) points.push_back(c.point);
+  const Circle mec = min_enclosing_circle(points);
+  z = mec.center;
+  return fits(z);
+}
+
 }  // namespace detail
 
 }  // namespace disktune

@@ -68,6 +68,11 @@ std::vector<Neighbor> mobile_neighbors(const Packing& packing, Vec2 point, DiskI
 /// on a circle whose radius just changed can open a sliver of void beside it.
 bool covers_all(const Packing& packing, Vec2 c, const std::vector<Corner>& corners);
 
+/// A point whose disk (radius radius_at) holds every corner and that lies in no disk,
+/// into `z`, or false: uniform darts into the box around the corners' common region first
+/// (keeps the choice random), then the center of their smallest enclosing circle.
+bool covering_point(const Packing& packing, const std::vector<Corner>& corners, Rng& rng, Vec2& z);
+
 /// True when no circle of a disk that can reach D(center, r) borders a void (no
 /// uncovered corner, no uncovered isolated circle). An exact local maximality check for
 /// the region D(center, r) after disks there were removed; unlike the corners inside the
