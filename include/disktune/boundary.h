@@ -30,13 +30,37 @@ void sample_boundary(Packing& packing, const PlanarDomain& domain, Rng& rng);
 void fill_boundary_voids(Packing& packing, const PlanarDomain& domain, Rng& rng);
 
 /// 1D tuning of the boundary toward a spacing (paper, 7: boundary disks are adjusted
-/// first, then stay fixed): the disks between the corners of each segment are replaced
-/// by ones spaced `spacing_factor` times the local radius (r(x), or r), as many as make
-/// the spacing closest to that, kept within [r, 2r]; those in conflict across corners
-/// or loops are dropped and the 1D voids left refilled. Interior disks in conflict with
-/// the new boundary disks are removed and the interior voids this leaves refilled, so
-/// the packing stays conflict-free and maximal.
+/// first, then stay fixed). Each segment is a curve between two corner disks, which never
+/// move; its other disks move along it by 1D injection and ejection (boundary_inject,
+/// boundary_eject) at random disks until it holds the number of disks that spaces them
+/// `spacing_factor` times the local radius (r(x), or r; the integral of ds / (factor r)
+/// steps, kept within [r, 2r] per step), or until no step changes the count for a while
+/// (the segment then keeps what it has); where a step at a disk changes no count, the
+/// run of consecutive disks around it is laid out again evenly with one disk less (more)
+/// between the two disks bounding it, and at the end sweeps move each disk to the middle
+/// of its neighbours (in ds / r) where valid. After every step the boundary disks stay
+/// max(r_i, r_j) apart (also across corners and loops) and cover the boundary, and the
+/// packing stays conflict-free and maximal. Marks the boundary disks first
+/// (boundary_loops), so it also takes a packing read from a file.
 void tune_boundary(Packing& packing, const PlanarDomain& domain, double spacing_factor, Rng& rng);
+
+/// One 1D injection at a movable boundary disk p drawn at random (paper 2.1 along the
+/// boundary): p moves to one end, at random, of the stretch of its segment its
+/// neighbours leave uncovered without it, and new fixed disks fill what is left of that
+/// stretch from there. Interior disks in conflict with a moved or new boundary disk (the
+/// latest arrival) are removed and every region a disk left is refilled, so the
+/// boundary stays conflict-free and 1D maximal and the packing conflict-free and
+/// maximal. Returns the number of disks added to the boundary: 0 when p only moved or
+/// had no room.
+long boundary_inject(Packing& packing, const PlanarDomain& domain, Rng& rng);
+
+/// One 1D ejection at a movable boundary disk p drawn at random (the attractor, paper
+/// 3.1, along the boundary): p's two neighbours on its segment (unless corners) move
+/// toward it as far as they can while keeping their other sides covered and no conflict;
+/// if they then cover p's stretch, p is removed, else p moves to the middle of what is
+/// left of its void (or nothing changes). The interior is repaired as in
+/// boundary_inject. Returns -1 when p was removed, else 0.
+long boundary_eject(Packing& packing, const PlanarDomain& domain, Rng& rng);
 
 /// The disks of `packing` whose centers lie on the domain's boundary (within 1e-9 r),
 /// flagged fixed, in order along each loop; the others lose the fixed flag. For a

@@ -28,11 +28,24 @@ std::size_t target_count(const Target& target, const SurfacePacking& packing);
 /// `options.after_surface_operation`, when set, runs after every operation.
 TuneResult tune(SurfacePacking& packing, const Target& target, Rng& rng, const TuneOptions& options = {});
 
-/// Lays the fixed disks of the open boundary out again at even arc length, about
-/// spacing_factor r apart (clamped to [1.05 r, 1.9 r]), removing interior disks they
-/// conflict with and refilling the voids; tune() does this first, at the spacing of a
-/// hexagonal packing of the target count. Closed surfaces and sizings are left alone.
+/// 1D tuning of the open boundary (paper, 7), the surface form of tune_boundary
+/// (boundary.h), with the same core: each boundary loop is a closed curve (no pinned
+/// disk) whose fixed disks move along it by 1D injection and ejection until the loop
+/// holds the number of disks that spaces them spacing_factor times the local radius
+/// (the sizing's, at each point; kept within [r, 2r] per step), or no step changes the
+/// count for a while (a step that changes no count is retried on a run of consecutive
+/// disks laid out again evenly; sweeps even out the gaps at the end, as in the plane).
+/// After every step the boundary disks stay max(r_i, r_j) apart in
+/// space and cover the boundary, interior disks they conflict with are gone and the
+/// voids refilled. tune() does this first, at the spacing of a hexagonal packing of the
+/// target count. A closed surface has nothing to tune.
 void respace_surface_boundary(SurfacePacking& packing, double spacing_factor, Rng& rng);
+
+/// One 1D injection (ejection) at a boundary disk drawn at random, as boundary_inject
+/// (boundary_eject) in boundary.h does in the plane. Returns the boundary disks added
+/// (-1 when one was removed); 0 on a closed surface.
+long boundary_inject(SurfacePacking& packing, Rng& rng);
+long boundary_eject(SurfacePacking& packing, Rng& rng);
 
 // The single operations; each returns the number of disks added (removed) and leaves the
 // packing conflict-free and maximal; one that would pass `max_added` is taken back.
