@@ -338,16 +338,19 @@ TEST(Tune, TargetsAreValidated) {
   EXPECT_THROW(tune(p, box, Target::count(p.size() + 1), rng, eject), InvalidInput);
 }
 
+// Every disk's center, radius and flags, sorted: the packing's state whatever the ids.
+std::vector<std::tuple<double, double, double, int>> sorted_disks(const Packing& p) {
+  std::vector<std::tuple<double, double, double, int>> s;
+  for (DiskId id : p.ids()) s.emplace_back(p.center(id).x, p.center(id).y, p.radius(id), p.flags(id));
+  std::sort(s.begin(), s.end());
+  return s;
+}
+
 TEST(UndoLog, RevertRestoresTheExactPacking) {
   const PeriodicBox box;
   Rng rng(8);
   Packing p = sample_mps(box, 0.05, rng);
-  auto snapshot = [&] {
-    std::vector<std::tuple<double, double, double, int>> s;
-    for (DiskId id : p.ids()) s.emplace_back(p.center(id).x, p.center(id).y, p.radius(id), p.flags(id));
-    std::sort(s.begin(), s.end());
-    return s;
-  };
+  auto snapshot = [&] { return sorted_disks(p); };
   const auto before = snapshot();
   detail::UndoLog log(p);
   for (int k = 0; k < 500; ++k) {
@@ -369,12 +372,7 @@ TEST(UndoLog, AnExceptionTakesTheEditsBack) {
   const PeriodicBox box;
   Rng rng(9);
   Packing p = sample_mps(box, 0.05, rng);
-  auto snapshot = [&] {
-    std::vector<std::tuple<double, double, double, int>> s;
-    for (DiskId id : p.ids()) s.emplace_back(p.center(id).x, p.center(id).y, p.radius(id), p.flags(id));
-    std::sort(s.begin(), s.end());
-    return s;
-  };
+  auto snapshot = [&] { return sorted_disks(p); };
   const auto start = snapshot();
   try {
     detail::UndoLog log(p);
