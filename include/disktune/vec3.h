@@ -33,13 +33,15 @@ inline double distance_to_segment(Vec3 p, Vec3 a, Vec3 b) {
 }
 
 /// The parameters s in [0, 1] at which a + s (b - a) lies in the closed ball of radius r
-/// around c, as [s0, s1]; nothing when the segment misses the ball (a != b).
-inline std::optional<std::array<double, 2>> segment_in_ball(Vec3 a, Vec3 b, Vec3 c, double r) {
+/// around c, as [s0, s1]; nothing when the segment misses the ball or has no length. For
+/// points in space (Vec3) and in the plane (Vec2).
+template <class V>
+std::optional<std::array<double, 2>> segment_in_ball(V a, V b, V c, double r) {
   // |a + s d - c|^2 <= r^2: a quadratic in s.
-  const Vec3 d = b - a, f = a - c;
+  const V d = b - a, f = a - c;
   const double A = dot(d, d), B = dot(f, d), C = dot(f, f) - r * r;
   const double disc = B * B - A * C;
-  if (disc < 0) return std::nullopt;
+  if (!(A > 0) || disc < 0) return std::nullopt;
   const double root = std::sqrt(disc);
   const double s0 = std::fmax(0.0, (-B - root) / A), s1 = std::fmin(1.0, (-B + root) / A);
   if (s0 > s1) return std::nullopt;

@@ -42,25 +42,13 @@
 
 #include "disktune/random.h"
 #include "disktune/tolerance.h"
+#include "disktune/vec3.h"
 #include "undo_log.h"
 
 namespace disktune::detail {
 
 inline std::array<double, 3> coords(Vec2 p) { return {p.x, p.y, 0}; }
 inline std::array<double, 3> coords(Vec3 p) { return {p.x, p.y, p.z}; }
-
-/// The parameters [t0, t1] of segment [a, b] inside the closed ball (c, R); false if none.
-template <class V>
-bool segment_in_ball(V a, V b, V c, double R, double& t0, double& t1) {
-  const V d = b - a, f = a - c;
-  const double A = dot(d, d), B = dot(f, d), C = dot(f, f) - R * R;
-  const double disc = B * B - A * C;
-  if (A <= 0 || disc < 0) return false;
-  const double s = std::sqrt(disc);
-  t0 = std::max((-B - s) / A, 0.0);
-  t1 = std::min((-B + s) / A, 1.0);
-  return t0 <= t1;
-}
 
 /// A boundary curve: piece k runs from v[k] to v[k + 1] (a closed curve's last piece back
 /// to v[0]); at[k] is the arc length at v[k], at.back() the whole length.
@@ -532,8 +520,7 @@ class CurveTuner {
     const double len = norm(b - a);
     std::vector<std::array<double, 2>> covered;
     auto add = [&](Pos x, double r) {
-      double u0, u1;
-      if (segment_in_ball(a, b, x, r * (1 + kRelTol), u0, u1)) covered.push_back({u0, u1});
+      if (const auto in = segment_in_ball(a, b, x, r * (1 + kRelTol))) covered.push_back(*in);
     };
     a_.for_each_near(a + (b - a) * (0.5 * (t0 + t1)), 0.5 * (t1 - t0) * len + rmax_ * (1 + 2 * kRelTol), [&](DiskId id) {
       if (fixed(id) && !plan.lifts(id)) add(packing_.center(id), packing_.radius(id));
@@ -591,9 +578,8 @@ class CurveTuner {
       const auto it = cells_.find(cell_of(bl.c));
       if (it == cells_.end()) continue;
       for (const auto& [c, k] : it->second) {
-        double t0, t1;
-        if (!segment_in_ball(curves_[c].a(k), curves_[c].b(k), bl.c, bl.r * (1 + kRelTol), t0, t1)) continue;
-        if (!piece_gaps(c, k, t0, t1, plan).empty()) return false;
+        const auto in = segment_in_ball(curves_[c].a(k), curves_[c].b(k), bl.c, bl.r * (1 + kRelTol));
+        if (in && !piece_gaps(c, k, (*in)[0], (*in)[1], plan).empty()) return false;
       }
     }
     return true;

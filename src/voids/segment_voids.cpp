@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "disktune/vec3.h"
 #include "disktune/voids.h"
 
 namespace disktune {
@@ -22,15 +23,7 @@ std::vector<std::array<double, 2>> uncovered_on_segment(const Packing& packing, 
     const Vec2 mid = a + d * ((k + 0.5) / pieces);
     packing.for_each_near(mid, 0.5 * len / pieces + reach, [&](const Neighbor& n) {
       if (fixed_only && !(packing.flags(n.id) & kFixed)) return;
-      // |a + t d - c|^2 <= R^2, a quadratic in t.
-      const double R = n.radius * (1 + kRelTol);
-      const Vec2 w = a - n.image;
-      const double A = dot(d, d), B = dot(d, w), C = dot(w, w) - R * R;
-      const double disc = B * B - A * C;
-      if (disc < 0) return;
-      const double s = std::sqrt(disc);
-      const double t0 = std::max((-B - s) / A, 0.0), t1 = std::min((-B + s) / A, 1.0);
-      if (t0 <= t1) covered.push_back({t0, t1});
+      if (const auto in = segment_in_ball(a, b, n.image, n.radius * (1 + kRelTol))) covered.push_back(*in);
     });
   }
   std::sort(covered.begin(), covered.end());
