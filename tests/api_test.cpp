@@ -8,20 +8,27 @@
 // OpenMesh's PropertyT::push_back copies a default point it leaves uninitialized.
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Delaunay_mesh_face_base_2.h>
+#include <CGAL/Delaunay_mesh_vertex_base_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Surface_mesh.h>
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 #include <tuple>
 #include <vector>
 
 #include "disktune/cgal/mesh_output.h"
+#include "disktune/cgal/planar_domain_from_cdt.h"
 #include "disktune/cgal/remesh.h"
 #include "disktune/disktune.h"
 #include "disktune/openmesh/remesh.h"
@@ -254,6 +261,49 @@ TEST(Adapters, APlanarMeshIntoTwoAndThreeDimensionalSurfaceMeshes) {
   copy_into(square, lifted);
   EXPECT_EQ(lifted.number_of_faces(), 2u);
   EXPECT_EQ(lifted.point(CgalMesh::Vertex_index(2)), Kernel::Point_3(1, 1, 0));
+}
+
+// A planar packing's constrained Delaunay mesh into a CGAL CDT (the one CGAL's 2D mesher
+// refines): the same vertices in order, every triangle of the mesh a face marked in the
+// domain, nothing else marked (holes and the hull's pockets stay out), judged against
+// the mesh's own arrays and, independently, the domain's area.
+TEST(Adapters, APlanarMeshIntoACgalCdtWithItsDomainMarked) {
+  using Tds = CGAL::Triangulation_data_structure_2<CGAL::Delaunay_mesh_vertex_base_2<Kernel>,
+                                                   CGAL::Delaunay_mesh_face_base_2<Kernel>>;
+  using Cdt = CGAL::Constrained_Delaunay_triangulation_2<Kernel, Tds>;
+  for (const char* name : {"square_with_hole.poly", "gear.poly"}) {
+    const auto domain =
+        std::make_shared<const PlanarDomain>(read_poly(std::string(DISKTUNE_DATA_DIR) + "/domains/" + name));
+    Rng rng(11);
+    Packing packing = sample_mps(domain, 0.03, rng);
+    const PlanarMesh mesh = constrained_delaunay(packing, boundary_loops(packing, *domain));
+    Cdt cdt;
+    cdt.insert(Kernel::Point_2(5, 5));  // replaced
+    const auto handles = copy_into(mesh, cdt, [](auto f, bool in) { f->set_in_domain(in); });
+    ASSERT_EQ(handles.size(), mesh.vertices.size()) << name;
+    EXPECT_EQ(cdt.number_of_vertices(), mesh.vertices.size()) << name;
+    for (std::size_t i = 0; i < handles.size(); ++i)
+      EXPECT_EQ(handles[i]->point(), Kernel::Point_2(mesh.vertices[i].x, mesh.vertices[i].y)) << name;
+    std::set<std::array<Cdt::Vertex_handle, 3>> inside;
+    double area = 0;
+    for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
+      if (!f->is_in_domain()) continue;
+      std::array<Cdt::Vertex_handle, 3> t{f->vertex(0), f->vertex(1), f->vertex(2)};
+      std::sort(t.begin(), t.end());
+      inside.insert(t);
+      area += CGAL::to_double(cdt.triangle(f).area());
+    }
+    EXPECT_EQ(inside.size(), mesh.triangles.size()) << name;
+    for (const auto& tri : mesh.triangles) {  // random points: no cocircular ties
+      std::array<Cdt::Vertex_handle, 3> t{handles[tri[0]], handles[tri[1]], handles[tri[2]]};
+      std::sort(t.begin(), t.end());
+      EXPECT_TRUE(inside.count(t)) << name;
+    }
+    EXPECT_NEAR(area, domain->area(), 1e-9 * domain->area()) << name;
+    EXPECT_NEAR(planar_domain_from_cdt(cdt, [](auto f) { return f->is_in_domain(); }).area(), domain->area(),
+                1e-9 * domain->area())
+        << name;
+  }
 }
 
 }  // namespace

@@ -108,8 +108,10 @@ sed -n 2p q.off | grep -qE "^[0-9]+ $((2 * n)) 0$" && pass=$((pass + 1)) || { ec
 expect mesh-obj 0 "-> q.obj" -- "$bin" mesh q.csv --radius 0.05 --output q.obj
 expect mesh-vtk 0 "-> q.vtk" -- "$bin" mesh q.csv --radius 0.05 --output q.vtk
 head -n 1 q.vtk | grep -qx "# vtk DataFile Version 3.0" && pass=$((pass + 1)) || { echo "FAIL VTK header"; fails=$((fails + 1)); }
-expect mesh-bad-extension 2 "supported: \.off, \.obj, \.vtk" -- "$bin" mesh q.csv --radius 0.05 --output q.ply
-absent mesh-bad-extension-output q.ply
+expect mesh-ply 0 "-> q.ply" -- "$bin" mesh q.csv --radius 0.05 --output q.ply
+sed -n 4p q.ply | grep -qE "^element vertex [0-9]+$" && pass=$((pass + 1)) || { echo "FAIL mesh PLY header"; fails=$((fails + 1)); }
+expect mesh-bad-extension 2 "supported: \.off, \.obj, \.ply, \.vtk" -- "$bin" mesh q.csv --radius 0.05 --output q.xyz
+absent mesh-bad-extension-output q.xyz
 expect mesh-no-output 2 "output" -- "$bin" mesh q.csv --radius 0.05
 printf 'x,y,r\n0.5,0.5,0.05\n0.2,0.7,0.05\n0.5,0.5,0.05\n' >twice.csv
 expect mesh-same-center 2 "coincide" -- "$bin" mesh twice.csv --radius 0.05 --output never.off
@@ -261,8 +263,10 @@ expect surface-report-png 2 "periodic box only" -- "$bin" report e4.csv --domain
 expect surface-angle 2 "angle injection triangulates" -- "$bin" tune --domain "$eight" --radius 0.045 --input e.csv --target-count 420 --method angle --output never.csv
 expect surface-crystal 0 "reached.*phase crystal ejection" -- "$bin" tune --domain "$eight" --radius 0.045 --input e.csv --target-fraction 0.5 --method crystal-eject
 absent surface-angle-output never.csv
-expect surface-mesh-vtk 2 "supported on a surface: \.off, \.obj, \.ply" -- "$bin" mesh e4.csv --domain "$eight" --radius 0.045 --output never.vtk
-absent surface-mesh-vtk-output never.vtk
+expect surface-mesh-vtk 0 "e4\.vtk" -- "$bin" mesh e4.csv --domain "$eight" --radius 0.045 --output e4.vtk
+grep -qx "DATASET POLYDATA" e4.vtk && pass=$((pass + 1)) || { echo "FAIL surface VTK"; fails=$((fails + 1)); }
+expect surface-mesh-bad-extension 2 "supported: \.off, \.obj, \.ply, \.vtk" -- "$bin" mesh e4.csv --domain "$eight" --radius 0.045 --output never.xyz
+absent surface-mesh-bad-extension-output never.xyz
 { head -n 3 e.csv; echo "0.5,0.5,0.5,0.045"; tail -n +4 e.csv; } >offsurface.csv
 expect surface-point-off 2 "offsurface\.csv:4: point \(0\.5, 0\.5, 0\.5\) lies .* from the surface.*\(--domain\)" -- "$bin" tune --domain "$eight" --radius 0.045 --input offsurface.csv --target-count 420 --output never.csv
 absent surface-point-off-output never.csv

@@ -9,7 +9,9 @@
 #include <fstream>
 #include <sstream>
 
+#include "../src/io/polygon_soup.h"
 #include "disktune/errors.h"
+#include "disktune/surface_mesh.h"
 #include "lattices.h"
 #include "test_util.h"
 
@@ -100,15 +102,51 @@ TEST(MeshIo, VtkHasPointsPolygonsAndDiskIds) {
             std::string::npos);
 }
 
+// Every mesh kind goes through one writer: a planar mesh as PLY and a surface mesh as
+// VTK read back, vertex for vertex, through the project's own reader and by hand.
+TEST(MeshIo, EveryFormatServesEveryMeshKind) {
+  TempDir dir;
+  const TriangleMesh m = small_mesh();
+  write_mesh(dir.file("m.ply"), m);
+  const detail::PolygonSoup soup = detail::read_polygon_soup(dir.file("m.ply"));
+  ASSERT_EQ(soup.points.size(), m.vertices.size());
+  for (std::size_t i = 0; i < m.vertices.size(); ++i) {
+    EXPECT_EQ(soup.points[i][0], m.vertices[i].x);
+    EXPECT_EQ(soup.points[i][1], m.vertices[i].y);
+    EXPECT_EQ(soup.points[i][2], 0.0);
+  }
+  ASSERT_EQ(soup.polygons.size(), m.triangles.size());
+  for (std::size_t t = 0; t < m.triangles.size(); ++t) {
+    EXPECT_EQ(soup.polygons[t], (std::vector<std::size_t>{m.triangles[t][0], m.triangles[t][1], m.triangles[t][2]}));
+  }
+
+  const SurfaceMesh tetra{{{0, 0, 0}, {1, 0, 1.0 / 3}, {0, 1, 0}, {0, 0, 1.0 / 7}}, {{{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}}}};
+  write_surface_mesh(dir.file("t.vtk"), tetra);
+  std::ifstream in(dir.file("t.vtk"));
+  std::string line;
+  while (std::getline(in, line) && line != "POINTS 4 double") {}
+  for (const Vec3& p : tetra.vertices) {
+    double x, y, z;
+    in >> x >> y >> z;
+    EXPECT_EQ((Vec3{x, y, z}), p);
+  }
+  in >> line;
+  EXPECT_EQ(line, "POLYGONS");
+  std::size_t n = 0, words = 0;
+  in >> n >> words;
+  EXPECT_EQ(n, 4u);
+  EXPECT_EQ(words, 16u);
+}
+
 TEST(MeshIo, UnknownExtensionIsRefusedAndWritesNothing) {
   TempDir dir;
   const TriangleMesh m = small_mesh();
-  for (const char* name : {"m.ply", "m", "m.off.txt"}) {
+  for (const char* name : {"m.xyz", "m", "m.off.txt"}) {
     try {
       write_mesh(dir.file(name), m);
       ADD_FAILURE() << name << " was accepted";
     } catch (const InvalidInput& e) {
-      EXPECT_NE(std::string(e.what()).find(".off, .obj, .vtk"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find(".off, .obj, .ply, .vtk"), std::string::npos) << e.what();
     }
   }
   EXPECT_TRUE(fs::is_empty(dir.path));

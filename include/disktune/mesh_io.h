@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Writing a TriangleMesh or PlanarMesh: OFF, OBJ or legacy-ASCII VTK (ParaView opens it), chosen by
-// the file's extension, and an SVG picture of the mesh over its packing. Every writer
+// Writing a TriangleMesh or PlanarMesh (and, through surface_mesh.h, a SurfaceMesh): ASCII
+// OFF, OBJ, PLY or legacy VTK (ParaView opens it), chosen by the file's extension, and an SVG picture of the mesh over its packing. Every writer
 // goes through write_file_atomically: a failure leaves no partial file.
 #pragma once
 
@@ -11,9 +11,9 @@
 
 namespace disktune {
 
-enum class MeshFormat { Off, Obj, Vtk };
+enum class MeshFormat { Off, Obj, Ply, Vtk };
 
-/// The format named by the extension of `path` (.off, .obj, .vtk; any letter case).
+/// The format named by the extension of `path` (.off, .obj, .ply, .vtk; any letter case).
 /// Throws InvalidInput, listing the supported extensions, for any other.
 MeshFormat mesh_format_for_path(const std::string& path);
 

@@ -38,8 +38,8 @@ struct SurfaceMeshCheck {
 /// or repeats one.
 SurfaceMeshCheck check_surface_mesh(const SurfaceMesh& mesh);
 
-/// Writes the mesh as ASCII OFF, OBJ or PLY, chosen by the extension of `path` (any
-/// letter case), every coordinate in the shortest form that reads back to the same double
+/// Writes the mesh as ASCII OFF, OBJ, PLY or legacy VTK, chosen by the extension of
+/// `path` (any letter case; mesh_io.h writes every mesh kind alike), every coordinate in the shortest form that reads back to the same double
 /// (at most 17 significant digits), through write_file_atomically. Throws InvalidInput,
 /// naming the allowed extensions, for any other extension, and IoError when the file
 /// cannot be written.

@@ -11,6 +11,7 @@
 
 #include "../io/number_text.h"
 #include "disktune/errors.h"
+#include "sizing_text.h"
 
 namespace disktune {
 namespace {
@@ -75,17 +76,9 @@ Sizing boundary_grading_sizing(std::shared_ptr<const PlanarDomain> domain, doubl
 }
 
 Sizing parse_sizing(const std::string& spec, std::shared_ptr<const PlanarDomain> domain) {
-  const std::string text = trimmed(spec);
-  if (text.empty()) {
-    throw InvalidInput(
-        "the sizing is empty: give a radius (0.01), boundary:RMIN,RMAX,G, a grid file, or an "
-        "expression in x and y (\"0.01 + 0.02*x\")");
-  }
-  double r = 0;
-  if (parse_number(text, r)) {
-    if (!(r > 0)) throw InvalidInput("sizing \"" + text + "\": a constant radius must be positive");
-    return constant_sizing(r);
-  }
+  const std::string text = detail::sizing_text(
+      spec, "a radius (0.01), boundary:RMIN,RMAX,G, a grid file, or an expression in x and y (\"0.01 + 0.02*x\")");
+  if (double r = 0; detail::constant_radius(text, r)) return constant_sizing(r);
   const std::string prefix = "boundary:";
   if (text.compare(0, prefix.size(), prefix) == 0) {
     return parse_boundary(text, text.substr(prefix.size()), std::move(domain));

@@ -14,6 +14,7 @@
 
 #include "disktune/errors.h"
 #include "expression_formula.h"
+#include "sizing_text.h"
 #include "surface_sizing_util.h"
 
 namespace disktune {
@@ -164,17 +165,9 @@ void limit_gradation(const SurfaceDomain& domain, std::vector<double>& radii, do
 }
 
 SurfaceSizing parse_surface_sizing(const std::string& spec, const SurfaceDomain& domain) {
-  const std::string text = trimmed(spec);
-  if (text.empty()) {
-    throw InvalidInput(
-        "the sizing is empty: give a radius (0.01), \"curvature\", curvature:RMIN,RMAX, or an "
-        "expression in x, y and z (\"0.01 + 0.02*z\")");
-  }
-  double r = 0;
-  if (parse_number(text, r)) {
-    if (!(r > 0)) throw InvalidInput("sizing \"" + text + "\": a constant radius must be positive");
-    return SurfaceSizing::constant(r);
-  }
+  const std::string text = detail::sizing_text(
+      spec, "a radius (0.01), \"curvature\", curvature:RMIN,RMAX, or an expression in x, y and z (\"0.01 + 0.02*z\")");
+  if (double r = 0; detail::constant_radius(text, r)) return SurfaceSizing::constant(r);
   if (text == "curvature") return curvature_sizing(domain);
   const std::string prefix = "curvature:";
   if (text.compare(0, prefix.size(), prefix) == 0) {

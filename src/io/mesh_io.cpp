@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// Every mesh (periodic, planar, surface) as ASCII OFF, OBJ, PLY or legacy VTK, by one
+// writer: a planar vertex is written with z = 0.
 #include "disktune/mesh_io.h"
 
 #include <string>
@@ -6,6 +8,7 @@
 
 #include "disktune/errors.h"
 #include "disktune/io.h"
+#include "disktune/surface_mesh.h"
 #include "file_extension.h"
 #include "number_text.h"
 
@@ -14,60 +17,67 @@ namespace {
 
 using detail::put_number;
 
-void put_vertex(std::ostream& out, Vec2 p) {
-  put_number(out, p.x);
-  out << ' ';
-  put_number(out, p.y);
-  out << " 0\n";
-}
-
-/// What the three formats need of a mesh, so one writer serves TriangleMesh and
-/// PlanarMesh alike. `title` names the mesh in the OBJ and VTK headers.
+/// What the formats need of a mesh. `vertex_disk`, when given, goes into the VTK file
+/// as point data; `title` names the mesh in the OBJ, PLY and VTK headers.
 struct MeshView {
-  const std::vector<Vec2>& vertices;
-  const std::vector<DiskId>& vertex_disk;
+  std::vector<Vec3> vertices;
+  const std::vector<DiskId>* vertex_disk;
   const std::vector<std::array<std::uint32_t, 3>>& triangles;
   std::string title;
 };
 
-void write_off(std::ostream& out, const MeshView& mesh) {
-  out << "OFF\n" << mesh.vertices.size() << ' ' << mesh.triangles.size() << " 0\n";
-  for (const Vec2 p : mesh.vertices) put_vertex(out, p);
-  for (const auto& t : mesh.triangles) out << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
+std::vector<Vec3> in_plane(const std::vector<Vec2>& points) {
+  std::vector<Vec3> out;
+  out.reserve(points.size());
+  for (const Vec2 p : points) out.push_back({p.x, p.y, 0});
+  return out;
 }
 
-void write_obj(std::ostream& out, const MeshView& mesh) {
-  out << "# " << mesh.title << ", " << mesh.triangles.size() << " triangles\n";
-  for (const Vec2 p : mesh.vertices) {
-    out << "v ";
-    put_vertex(out, p);
-  }
-  for (const auto& t : mesh.triangles) {  // OBJ counts vertices from 1
-    out << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
+void put_vertices(std::ostream& out, const MeshView& mesh, const char* prefix) {
+  for (const Vec3& p : mesh.vertices) {
+    out << prefix;
+    put_number(out, p.x);
+    out << ' ';
+    put_number(out, p.y);
+    out << ' ';
+    put_number(out, p.z);
+    out << '\n';
   }
 }
 
-void write_vtk(std::ostream& out, const MeshView& mesh) {
-  out << "# vtk DataFile Version 3.0\n"
-      << mesh.title << "\nASCII\nDATASET POLYDATA\nPOINTS " << mesh.vertices.size() << " double\n";
-  for (const Vec2 p : mesh.vertices) put_vertex(out, p);
-  out << "POLYGONS " << mesh.triangles.size() << ' ' << 4 * mesh.triangles.size() << '\n';
-  for (const auto& t : mesh.triangles) out << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
-  out << "POINT_DATA " << mesh.vertices.size() << "\nSCALARS disk_id unsigned_int 1\n"
-      << "LOOKUP_TABLE default\n";
-  for (const DiskId id : mesh.vertex_disk) out << id << '\n';
+// `base` is the first vertex's number: 1 in OBJ, 0 elsewhere.
+void put_triangles(std::ostream& out, const MeshView& mesh, const char* prefix, std::uint32_t base) {
+  for (const auto& t : mesh.triangles) out << prefix << t[0] + base << ' ' << t[1] + base << ' ' << t[2] + base << '\n';
 }
 
 void write_view(const std::string& path, const MeshView& mesh) {
   const MeshFormat format = mesh_format_for_path(path);
+  const std::size_t nv = mesh.vertices.size(), nt = mesh.triangles.size();
   write_file_atomically(path, [&](std::ostream& out) {
     switch (format) {
       case MeshFormat::Off:
-        return write_off(out, mesh);
+        out << "OFF\n" << nv << ' ' << nt << " 0\n";
+        put_vertices(out, mesh, "");
+        return put_triangles(out, mesh, "3 ", 0);
       case MeshFormat::Obj:
-        return write_obj(out, mesh);
+        out << "# " << mesh.title << ", " << nt << " triangles\n";
+        put_vertices(out, mesh, "v ");
+        return put_triangles(out, mesh, "f ", 1);
+      case MeshFormat::Ply:
+        out << "ply\nformat ascii 1.0\ncomment " << mesh.title << "\nelement vertex " << nv
+            << "\nproperty double x\nproperty double y\nproperty double z\nelement face " << nt
+            << "\nproperty list uchar int vertex_indices\nend_header\n";
+        put_vertices(out, mesh, "");
+        return put_triangles(out, mesh, "3 ", 0);
       case MeshFormat::Vtk:
-        return write_vtk(out, mesh);
+        out << "# vtk DataFile Version 3.0\n" << mesh.title << "\nASCII\nDATASET POLYDATA\nPOINTS " << nv << " double\n";
+        put_vertices(out, mesh, "");
+        out << "POLYGONS " << nt << ' ' << 4 * nt << '\n';
+        put_triangles(out, mesh, "3 ", 0);
+        if (!mesh.vertex_disk) return;
+        out << "POINT_DATA " << nv << "\nSCALARS disk_id unsigned_int 1\nLOOKUP_TABLE default\n";
+        for (const DiskId id : *mesh.vertex_disk) out << id << '\n';
+        return;
     }
   });
 }
@@ -78,20 +88,27 @@ MeshFormat mesh_format_for_path(const std::string& path) {
   const std::string ext = detail::lower_extension(path);
   if (ext == ".off") return MeshFormat::Off;
   if (ext == ".obj") return MeshFormat::Obj;
+  if (ext == ".ply") return MeshFormat::Ply;
   if (ext == ".vtk") return MeshFormat::Vtk;
   throw InvalidInput("cannot tell the mesh format of '" + path +
-                     "' from its extension; supported: .off, .obj, .vtk (legacy ASCII VTK)");
+                     "' from its extension; supported: .off, .obj, .ply, .vtk (all ASCII; .vtk is legacy VTK)");
 }
 
 void write_mesh(const std::string& path, const TriangleMesh& mesh) {
-  write_view(path,
-             {mesh.vertices, mesh.vertex_disk, mesh.triangles,
-              "disktune periodic Delaunay mesh: " + std::to_string(mesh.disk_count) + " disks"});
+  write_view(path, {in_plane(mesh.vertices), &mesh.vertex_disk, mesh.triangles,
+                    "disktune periodic Delaunay mesh: " + std::to_string(mesh.disk_count) + " disks"});
 }
 
 void write_mesh(const std::string& path, const PlanarMesh& mesh) {
-  write_view(path, {mesh.vertices, mesh.vertex_disk, mesh.triangles,
+  write_view(path, {in_plane(mesh.vertices), &mesh.vertex_disk, mesh.triangles,
                     "disktune planar mesh: " + std::to_string(mesh.vertices.size()) + " vertices"});
 }
+
+void write_surface_mesh(const std::string& path, const SurfaceMesh& mesh) {
+  write_view(path, {mesh.vertices, nullptr, mesh.triangles,
+                    "disktune surface mesh: " + std::to_string(mesh.vertices.size()) + " vertices"});
+}
+
+void check_surface_mesh_path(const std::string& path) { mesh_format_for_path(path); }
 
 }  // namespace disktune

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The disks around p, ring by ring, that attractor ejection pulls (internal; planar and
-// surface packings both use it).
+// Attractor ejection over an undo log, and the disks around p, ring by ring, that it
+// pulls (internal; planar and surface packings both use it).
 #pragma once
 
 #include <algorithm>
@@ -8,6 +8,8 @@
 #include <vector>
 
 #include "disktune/packing.h"
+#include "disktune/random.h"
+#include "undo_log.h"
 
 namespace disktune::detail {
 
@@ -16,6 +18,13 @@ namespace disktune::detail {
 /// bounded domain; three rings reach about 0.60 (docs/tuning.md), at about four times
 /// the cost of an operation.
 inline constexpr int kWideAttractorRings = 3;
+
+/// Attractor ejection of p over `rings` rings of neighbours (tuning.h), its edits
+/// recorded in `log` (taken back to where they started when it fails), so that a caller
+/// such as crystal ejection can take it back too. Defined in attractor_ejection.cpp for
+/// Packing and SurfacePacking.
+template <class P>
+std::size_t attractor_eject(BasicUndoLog<P>& log, P& packing, DiskId p, Rng& rng, std::size_t max_removed, int rings);
 
 /// One disk to pull: the item (a disk, or a disk with its image) and the index, in the
 /// same list, of the disk nearer p it is pulled toward (entry 0 is p itself).

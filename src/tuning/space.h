@@ -19,11 +19,27 @@
 //   void_free_near(P, c, r)    no void within D(c, r): the exact check after a change
 //   covering_point(P, voids, near, R, rng, z)  a random place within R of `near` where
 //                    one disk covers every void point and meets no disk
+//   sole_cover_point(P, voids, p, c, r, z)  where disk p alone covers the voids around
+//                    it (p's own disk ignored), or false
+//   pull_toward(log, P, q, to, passable)  moves neighbour q as close to `to` as it can
+//                    while it covers its own void and meets no disk but `passable`'s
+//   for_each_near(P, c, R, f), any_near(P, c, R, pred)  neighbours (Near, with d2)
+//   inside(P, x)     x lies in the domain (a surface's points always do)
+//   stable_order(ids)  sorts ids where the grid's visiting order is not reproducible
+// and, for crystal growth (lattice spacing s):
+//   for_each_site(P, a, ia, b, ib, s, f)  the points at distance s from centers a and b
+//   point_at(P, c, s, rng, x)  a random point at distance s from center c, or false
+//   Sites            the lattice sites waiting to be settled, each place once at a time
 // The primitives themselves are in void_repair.h / surface_repair.h.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
+#include <utility>
 #include <vector>
+
+#include "../geometry/triangle_arrangement.h"
 
 #include "disktune/packing.h"
 #include "disktune/surface_packing.h"
@@ -77,12 +93,69 @@ struct Space<Packing> {
                              double /*R*/, Rng& rng, Point& z) {
     return detail::covering_point(packing, voids, rng, z);
   }
+  static bool sole_cover_point(const Packing& packing, const std::vector<VoidPoint>& voids, DiskId p, Location /*c*/,
+                               double /*r*/, Point& z) {
+    return detail::sole_cover_point(packing, voids, p, z);
+  }
+  static void pull_toward(UndoLog& log, Packing& packing, const Near& q, Location to, DiskId passable) {
+    detail::pull_toward(log, packing, q, to, passable);
+  }
+  template <class F>
+  static void for_each_near(const Packing& packing, Location c, double R, F&& f) {
+    packing.for_each_near(c, R, std::forward<F>(f));
+  }
+  template <class Pred>
+  static bool any_near(const Packing& packing, Location c, double R, Pred&& pred) {
+    return packing.any_near(c, R, std::forward<Pred>(pred));
+  }
+  static bool inside(const Packing& packing, Point x) { return packing.inside(x); }
+  static void stable_order(std::vector<DiskId>& /*ids*/) {}  // the flat grid's order is fixed
+
+  template <class F>
+  static void for_each_site(const Packing& /*packing*/, Location a, DiskId, Location b, DiskId, double s, F&& f) {
+    const CircleIntersection x = intersect_circles(a, s, b, s);
+    for (int k = 0; k < x.count; ++k) f(x.points[k]);
+  }
+  static bool point_at(const Packing& packing, DiskId c, double s, Rng& rng, Point& x) {
+    const double angle = 2 * 3.14159265358979323846 * uniform01(rng);
+    x = packing.center(c) + Vec2{std::cos(angle), std::sin(angle)} * s;
+    return true;
+  }
+  /// Sites in a grid over the frame (wrapped on the torus), each place once at a time.
+  class Sites {
+   public:
+    Sites(const Packing& packing, double r) : grid_(packing.frame(), r), r_(r) {}
+    bool empty() const { return live_.empty(); }
+    void add(Point a) {
+      a = grid_.frame().wrap(a);
+      if (grid_.any_near(a, 1e-7 * r_, [](const Neighbor&) { return true; })) return;
+      const auto id = static_cast<DiskId>(points_.size());
+      points_.push_back(a);
+      grid_.insert(id, a, 0.0);
+      live_.push_back(id);
+    }
+    Point take_random(Rng& rng) {
+      const std::size_t i = uniform_index(rng, live_.size());
+      const DiskId id = live_[i];
+      live_[i] = live_.back();
+      live_.pop_back();
+      grid_.remove(id, points_[id]);
+      return points_[id];
+    }
+
+   private:
+    SpatialGrid grid_;
+    double r_;
+    std::vector<Vec2> points_;
+    std::vector<DiskId> live_;
+  };
 };
 
 /// A neighbour on a surface, named as the planar Neighbor is (no periodic images here).
 struct SurfaceNeighbor {
   DiskId id;
   Vec3 image;
+  double d2;  // squared distance to the query point
   double radius;
 };
 
@@ -110,7 +183,7 @@ struct Space<SurfacePacking> {
                                             Rng& rng) {
     std::vector<Near> out;
     for (const DiskId id : detail::mobile_neighbors(packing, c, r, self, rng))
-      out.push_back({id, packing.center(id), packing.radius(id)});
+      out.push_back({id, packing.center(id), squared_norm(packing.center(id) - c), packing.radius(id)});
     return out;
   }
   static std::size_t repair_void(SurfaceUndoLog& log, const SurfacePacking& packing, Location c, double R,
@@ -124,6 +197,90 @@ struct Space<SurfacePacking> {
                              double R, Rng& rng, Point& z) {
     return detail::covering_point(packing, voids, near, R, rng, z);
   }
+  static bool sole_cover_point(const SurfacePacking& packing, const std::vector<VoidPoint>& voids, DiskId p,
+                               Location c, double r, Point& z) {
+    return detail::sole_cover_point(packing, voids, p, c, r, z);
+  }
+  static void pull_toward(SurfaceUndoLog& log, SurfacePacking& packing, const Near& q, Location to,
+                          DiskId passable) {
+    detail::pull_toward(log, packing, q.id, to, passable);
+  }
+  template <class F>
+  static void for_each_near(const SurfacePacking& packing, Location c, double R, F&& f) {
+    packing.for_each_near(c, R, [&](DiskId j) {
+      f(Near{j, packing.center(j), squared_norm(packing.center(j) - c), packing.radius(j)});
+    });
+  }
+  template <class Pred>
+  static bool any_near(const SurfacePacking& packing, Location c, double R, Pred&& pred) {
+    return packing.any_near(c, R, [&](DiskId j) {
+      return pred(Near{j, packing.center(j), squared_norm(packing.center(j) - c), packing.radius(j)});
+    });
+  }
+  static bool inside(const SurfacePacking& /*packing*/, const Point& /*x*/) { return true; }  // made on it
+  // The hashed grid visits cells in an order a rehash changes.
+  static void stable_order(std::vector<DiskId>& ids) { std::sort(ids.begin(), ids.end()); }
+
+  // Sites: where the two balls' circles meet a triangle near a.
+  template <class F>
+  static void for_each_site(const SurfacePacking& packing, Location a, DiskId ia, Location b, DiskId ib, double s,
+                            F&& f) {
+    const std::vector<Ball> pair{{a, s, ia}, {b, s, ib}};
+    std::vector<std::uint32_t> tris;
+    packing.index().triangles_near(a, s, tris);
+    for (const std::uint32_t t : tris) {
+      for_each_arrangement_vertex(packing.index().plane(t), pair, kRelTol * packing.max_radius(),
+                                  [&](Vec3 x, DiskId u, DiskId v) {
+                                    if (u != kNoDisk && v != kNoDisk) f(Point{x, t});
+                                  });
+    }
+  }
+  // A random one of the points where the sphere S(c, s) crosses a triangle edge.
+  static bool point_at(const SurfacePacking& packing, DiskId c, double s, Rng& rng, Point& x) {
+    std::vector<Point> ring;
+    std::vector<std::uint32_t> tris;
+    packing.index().triangles_near(packing.center(c), s, tris);
+    const std::vector<Ball> ball{{packing.center(c), s, c}};
+    for (const std::uint32_t t : tris) {
+      for_each_arrangement_vertex(packing.index().plane(t), ball, kRelTol * packing.max_radius(),
+                                  [&](Vec3 y, DiskId u, DiskId v) {
+                                    if (u == c && v == kNoDisk) ring.push_back({y, t});
+                                  });
+    }
+    if (ring.empty()) return false;
+    x = ring[uniform_index(rng, ring.size())];
+    return true;
+  }
+  /// Sites in a hashed grid, each place once at a time.
+  class Sites {
+   public:
+    Sites(const SurfacePacking& /*packing*/, double r) : grid_(r), r_(r) {}
+    bool empty() const { return live_.empty(); }
+    void add(const Point& a) {
+      if (grid_.any_in_box(a.p, 1e-7 * r_, [&](std::uint32_t k) {
+            return squared_norm(points_[k].p - a.p) <= 1e-14 * r_ * r_;
+          }))
+        return;
+      const auto id = static_cast<std::uint32_t>(points_.size());
+      points_.push_back(a);
+      grid_.insert(id, a.p);
+      live_.push_back(id);
+    }
+    Point take_random(Rng& rng) {
+      const std::size_t i = uniform_index(rng, live_.size());
+      const std::uint32_t id = live_[i];
+      live_[i] = live_.back();
+      live_.pop_back();
+      grid_.remove(id, points_[id].p);
+      return points_[id];
+    }
+
+   private:
+    SpaceGrid grid_;
+    double r_;
+    std::vector<Point> points_;
+    std::vector<std::uint32_t> live_;
+  };
 };
 
 }  // namespace disktune::detail

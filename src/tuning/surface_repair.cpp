@@ -102,6 +102,39 @@ bool covering_point(const SurfacePacking& packing, const std::vector<SurfaceVoid
   return true;
 }
 
+bool sole_cover_point(const SurfacePacking& packing, const std::vector<SurfaceVoidPoint>& voids, DiskId p, Vec3 c,
+                      double r, SurfacePoint& z) {
+  const auto spots = covering_positions(packing, voids, c, 2 * r, p);
+  if (spots.empty()) return false;
+  std::size_t pick = 0;
+  double pick_far = 1e300;
+  for (std::size_t i = 0; i < spots.size(); ++i) {
+    double far = 0;
+    for (const SurfaceVoidPoint& v : voids) far = std::max(far, squared_norm(v.at.p - spots[i].p));
+    if (far < pick_far) pick = i, pick_far = far;
+  }
+  z = spots[pick];
+  return true;
+}
+
+void pull_toward(SurfaceUndoLog& log, SurfacePacking& packing, DiskId q, Vec3 to, DiskId passable) {
+  const Vec3 cq = packing.center(q);
+  const double rq = packing.radius(q);
+  const auto voids = voids_near(packing, cq, void_reach(rq), {q});
+  if (voids.empty()) return;
+  const auto spots = covering_positions(packing, voids, cq, 2 * rq, q, passable, &to);
+  const SurfacePoint* best = nullptr;
+  double best_d2 = squared_norm(cq - to) * (1 - 1e-9);
+  for (const SurfacePoint& s : spots) {
+    const double d2 = squared_norm(s.p - to);
+    if (d2 < best_d2) best = &s, best_d2 = d2;
+  }
+  if (!best) return;
+  const std::size_t before = log.mark();
+  log.move(q, *best);
+  if (!void_free_near(packing, cq, rq)) log.revert_to(before);
+}
+
 std::vector<DiskId> mobile_neighbors(const SurfacePacking& packing, Vec3 point, double r, DiskId self, Rng& rng) {
   std::vector<DiskId> near;
   packing.for_each_near(point, r + packing.max_radius(), [&](DiskId j) {

@@ -53,11 +53,13 @@ std::vector<DiskId> mobile_neighbors(const SurfacePacking& packing, Vec3 point, 
 std::size_t repair_void(SurfaceUndoLog& log, const SurfacePacking& packing, Vec3 q, double R, Rng& rng,
                         std::size_t max_added);
 
-/// Attractor ejection of p over `rings` rings of neighbours (surface_tuning.h), its edits
-/// recorded in `log` (taken back to where they started when it fails), so that a caller
-/// can take it back too.
-std::size_t attractor_eject(SurfaceUndoLog& log, SurfacePacking& packing, DiskId p, Rng& rng, std::size_t max_removed,
-                            int rings);
+/// Where disk p alone covers the void points within r of c (p's own disk ignored), into
+/// `z`: the covering position nearest to the farthest void point; false when there is none.
+bool sole_cover_point(const SurfacePacking& packing, const std::vector<SurfaceVoidPoint>& voids, DiskId p, Vec3 c,
+                      double r, SurfacePoint& z);
 
+/// Moves q as close to `to` as it can while it still covers its own void and conflicts
+/// with no disk but `passable`'s; nothing when no covering position is closer.
+void pull_toward(SurfaceUndoLog& log, SurfacePacking& packing, DiskId q, Vec3 to, DiskId passable);
 
 }  // namespace disktune::detail

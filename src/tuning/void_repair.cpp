@@ -83,6 +83,69 @@ bool covering_point(const Packing& packing, const std::vector<Corner>& corners, 
   return fits(z);
 }
 
+bool sole_cover_point(const Packing& packing, const std::vector<Corner>& corners, DiskId p, Vec2& z) {
+  std::vector<Vec2> points;
+  for (const Corner& c : corners) points.push_back(c.point);
+  z = min_enclosing_circle(points).center;
+  packing.for_each_near(z, packing.max_radius(), [&](const Neighbor& k) {
+    if (k.id != p && is_conflict(k.d2, k.radius) && k.d2 > 0) {
+      z = k.image + (z - k.image) * (k.radius / std::sqrt(k.d2));
+    }
+  });
+  return !packing.conflicts(z, p) && covers_all(packing, z, corners);
+}
+
+namespace {
+
+// How far along q + t v (t in [0, 1]) the disk at q can go, keeping its radius: it must
+// keep every corner of its void within its radius (an interval of t around 0 per
+// corner), and its center must not enter a disk other than `passable`'s and its own
+// (the first entry bounds t) nor stay in one it lies in.
+double reach_toward(const Packing& packing, DiskId passable, const Neighbor& q, Vec2 v,
+                    const std::vector<Corner>& corners) {
+  const double a = squared_norm(v), r = q.radius;
+  double t = 1.0;
+  for (const Corner& c : corners) {
+    const Vec2 w = q.image - c.point;
+    const double b = dot(v, w), c0 = std::min(squared_norm(w) - r * r, 0.0);
+    t = std::min(t, (-b + std::sqrt(b * b - a * c0)) / a);
+  }
+  packing.for_each_near(q.image, std::sqrt(a) + packing.max_radius(), [&](const Neighbor& k) {
+    if (k.id == passable || k.id == q.id) return;
+    const Vec2 w = q.image - k.image;
+    // q's center may lie in a larger disk that came later (the prior-disk rule), but
+    // moved it is a new center there, whose radius may also grow past k's center.
+    if (is_conflict(squared_norm(w), k.radius)) {
+      t = 0;
+      return;
+    }
+    const double b = dot(v, w), c0 = squared_norm(w) - k.radius * k.radius, disc = b * b - a * c0;
+    if (disc <= 0 || b >= 0) return;  // the line misses the disk, or leads away from it
+    t = std::min(t, std::max((-b - std::sqrt(disc)) / a, 0.0));
+  });
+  return t;
+}
+
+}  // namespace
+
+void pull_toward(UndoLog& log, Packing& packing, const Neighbor& q, Vec2 to, DiskId passable) {
+  std::vector<Corner> corners;
+  corners_in_region(packing, q.image, q.radius, {q.id}, corners);
+  const Vec2 v = to - q.image;
+  double t = reach_toward(packing, passable, q, v, corners);
+  // With varying radii q's radius changes on the way: where it no longer covers its
+  // void, try 0.9 of the step, three times at most (6.2). Any shorter step still
+  // keeps q out of the other disks. (A non-convex domain may not hold the target.)
+  for (int tries = 0; tries < 3 && t > 0; ++tries, t *= 0.9) {
+    const Vec2 at = q.image + v * t;
+    if (packing.inside(at) && covers_all(packing, at, corners)) {
+      log.move(q.id, at);  // still covers its void: no repair
+      break;
+    }
+    if (!packing.sizing()) break;
+  }
+}
+
 }  // namespace detail
 
 }  // namespace disktune

@@ -80,10 +80,14 @@ bool covering_point(const Packing& packing, const std::vector<Corner>& corners, 
 /// disks are left).
 bool void_free_near(const Packing& packing, Vec2 center, double r);
 
-/// Attractor ejection of p over `rings` rings of neighbours (see tuning.h), its edits
-/// recorded in `log` (taken back to where they started when it fails), so that a caller
-/// can take it back too.
-std::size_t attractor_eject(UndoLog& log, Packing& packing, DiskId p, Rng& rng, std::size_t max_removed, int rings);
+/// Where disk p alone covers the corners around it (p's own disk ignored), into `z`:
+/// the center of their smallest enclosing circle, pushed out of a disk it landed in;
+/// false when that point conflicts or leaves a corner uncovered.
+bool sole_cover_point(const Packing& packing, const std::vector<Corner>& corners, DiskId p, Vec2& z);
+
+/// Moves neighbour q (an image of it) as far toward `to` as it can while it still covers
+/// its own void and its center enters no disk but `passable`'s (attractor ejection's pull).
+void pull_toward(UndoLog& log, Packing& packing, const Neighbor& q, Vec2 to, DiskId passable);
 
 /// Restores maximality inside D(center, r) after a disk there was lifted or moved: while
 /// the region holds uncovered corners, injects a disk at void_corner (paper, 2.1). Corners are the only place voids can hide: everything outside the

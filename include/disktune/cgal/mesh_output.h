@@ -1,12 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// disktune's meshes (plain arrays) into a CGAL::Surface_mesh. Header-only: include it
-// where CGAL is at hand; the library itself stays free of CGAL in its public headers.
+// disktune's meshes (plain arrays) into a CGAL::Surface_mesh, and a planar mesh into a
+// CGAL constrained Delaunay triangulation. Header-only: include it where CGAL is at
+// hand; the library itself stays free of CGAL in its public headers.
 #pragma once
 
 #include <CGAL/Dimension.h>
 #include <CGAL/Surface_mesh.h>
 
 #include <cstddef>
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -70,6 +72,57 @@ void copy_into(const SurfaceMesh& mesh, CGAL::Surface_mesh<P>& out) {
 template <class P>
 void copy_into(const PlanarMesh& mesh, CGAL::Surface_mesh<P>& out) {
   detail::fill_cgal_mesh(mesh.vertices, mesh.triangles, out);
+}
+
+/// Replaces `cdt` (a CGAL::Constrained_Delaunay_triangulation_2, e.g. the one CGAL's 2D
+/// mesher refines) by the triangulation of a planar mesh: its vertices, with its
+/// boundary edges (those of one triangle) as constraints. Like every CGAL triangulation
+/// it covers the convex hull, so each finite face f is told whether it lies in the
+/// mesh's domain: in_domain(f, bool) (for Delaunay_mesh_face_base_2,
+/// `[](auto f, bool in) { f->set_in_domain(in); }`). A face is inside when an odd number
+/// of constraints separate it from the unbounded face (CGAL's own rule for its meshers),
+/// so where four points are cocircular and the two triangulations pick different
+/// diagonals, the domain is still the mesh's. Returns the vertex handle of each mesh
+/// vertex, in order.
+template <class Cdt, class InDomain>
+std::vector<typename Cdt::Vertex_handle> copy_into(const PlanarMesh& mesh, Cdt& cdt, InDomain&& in_domain) {
+  using Point = typename Cdt::Point;
+  Cdt out;
+  std::vector<typename Cdt::Vertex_handle> handles;
+  handles.reserve(mesh.vertices.size());
+  for (const Vec2 p : mesh.vertices) handles.push_back(out.insert(Point(p.x, p.y)));
+  // Boundary edges: the edges of exactly one triangle.
+  std::map<std::pair<std::uint32_t, std::uint32_t>, int> uses;
+  for (const auto& t : mesh.triangles) {
+    for (int k = 0; k < 3; ++k) ++uses[std::minmax(t[k], t[(k + 1) % 3])];
+  }
+  for (const auto& [edge, count] : uses) {
+    if (count == 1) out.insert_constraint(handles[edge.first], handles[edge.second]);
+  }
+  // Nesting by flood fill from the unbounded face: a constrained edge adds one level.
+  std::map<typename Cdt::Face_handle, int> level;
+  std::vector<typename Cdt::Face_handle> front{out.infinite_face()}, next;
+  level[out.infinite_face()] = 0;
+  for (int depth = 0; !front.empty(); ++depth, front.swap(next), next.clear()) {
+    while (!front.empty()) {
+      const auto f = front.back();
+      front.pop_back();
+      for (int k = 0; k < 3; ++k) {
+        const auto g = f->neighbor(k);
+        if (level.count(g)) continue;
+        if (out.is_constrained({f, k})) {
+          next.push_back(g);
+        } else {
+          level[g] = depth;
+          front.push_back(g);
+        }
+      }
+    }
+    for (const auto g : next) level.emplace(g, depth + 1);
+  }
+  cdt.swap(out);  // handles stay valid: the faces and vertices change owner, not place
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) in_domain(f, level[f] % 2 == 1);
+  return handles;
 }
 
 }  // namespace disktune
