@@ -94,8 +94,9 @@ TEST(FinalCheck, ASurfaceTuneLeavingAHoleHandsBackAValidPacking) {
   options.after_surface_operation = lift_now_and_then<SurfacePacking>(operations);
   const std::string message =
       test::message_of<InternalError>([&] { tune(packing, Target::count(sampled * 5 / 4), rng, options); });
-  EXPECT_TRUE(mentions(message, "failed the final check: the point")) << message;
-  EXPECT_TRUE(mentions(message, "is covered by no disk (the packing is not maximal)")) << message;
+  EXPECT_TRUE(mentions(message, "failed the final check: not maximal: the point (")) << message;
+  EXPECT_TRUE(mentions(message, " of triangle ")) << message;
+  EXPECT_TRUE(mentions(message, " is covered by no disk")) << message;
   EXPECT_EQ(packing.size(), sampled);
   EXPECT_SURFACE_OK(packing);
 }

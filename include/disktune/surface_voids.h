@@ -51,9 +51,9 @@ bool is_conflict_free(const SurfacePacking& packing);
 /// naming a conflicting pair or an uncovered point; `what` names the input.
 void validate_packing(const SurfacePacking& packing, const std::string& what);
 
-/// What makes the packing invalid, as a phrase naming the place (a conflicting pair, an
-/// uncovered point and its triangle, no disks); empty when it is conflict-free and
-/// maximal. The exact checks of validate_packing.
+/// What makes the packing invalid, as a phrase naming the place (voids.h's words; a hole
+/// is "the point (x, y, z) of triangle t"); empty when it is conflict-free and maximal.
+/// The exact checks of validate_packing.
 std::string packing_defect(const SurfacePacking& packing);
 
 }  // namespace disktune

@@ -46,14 +46,20 @@ std::vector<std::array<double, 2>> uncovered_on_segment(const Packing& packing, 
 /// to the tolerance). Linear time.
 bool is_maximal(const Packing& packing);
 
+/// True when no two disks cover each other's centers (the prior-disk rule, pairwise: a
+/// center may lie in a larger disk, which came later). Linear time.
+bool is_conflict_free(const Packing& packing);
+
 /// Throws InvalidInput unless the packing is non-empty, conflict-free and maximal,
 /// naming a conflicting pair or an uncovered point; `what` names the input in the
 /// message (e.g. a file name). Linear time.
 void validate_packing(const Packing& packing, const std::string& what);
 
-/// What makes the packing invalid, as a phrase naming the place ("not maximal: the
-/// point (x, y) is covered by no disk", a conflicting pair, no disks); empty when it is
-/// conflict-free and maximal. The exact checks of validate_packing and is_maximal.
+/// What makes the packing invalid, as a phrase naming the place, every digit of it: no
+/// disks, a conflicting pair first ("the disks centered at (x, y) and (x, y) cover each
+/// other's centers (a conflict): they are closer than r"), then a hole ("not maximal: the point (x, y) is covered by no
+/// disk"); empty when it is conflict-free and maximal. One check for every space
+/// (packing_defect.cpp), the same words on a surface.
 std::string packing_defect(const Packing& packing);
 
 }  // namespace disktune

@@ -124,20 +124,6 @@ void check_uniform_radius(const Packing& packing, double r) {
   }
 }
 
-/// No pair of disks covers each other's centers: every pair closer than the smaller
-/// radius (r, for one radius), through the packing's grid.
-bool is_conflict_free(const Packing& packing) {
-  for (const DiskId id : packing.ids()) {
-    const double r = packing.radius(id);
-    if (packing.any_near(packing.center(id), r, [&](const Neighbor& n) {
-          return n.id != id && is_conflict(n.d2, std::min(r, n.radius));
-        })) {
-      return false;
-    }
-  }
-  return true;
-}
-
 }  // namespace
 
 namespace detail {

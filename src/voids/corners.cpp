@@ -1,13 +1,16 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <optional>
 #include <sstream>
 
 #include "disktune/errors.h"
 
+#include "../domain/point_text.h"
 #include "corner_cover.h"
 #include "disktune/voids.h"
+#include "packing_checks.h"
 
 namespace disktune {
 namespace {
@@ -112,56 +115,34 @@ void corners_in_region(const Packing& packing, Vec2 center, double R,
   }
 }
 
-std::string packing_defect(const Packing& packing) {
-  std::ostringstream msg;
-  if (packing.empty()) return "holds no disks";
-  if (const auto hole = uncovered_boundary_point(packing)) {
-    msg << "not maximal: the boundary point (" << hole->x << ", " << hole->y << ") is covered by no disk";
-    return msg.str();
-  }
-  std::vector<Corner> corners;
-  for (DiskId id = 0; id < packing.id_bound(); ++id) {
-    if (!packing.alive(id)) continue;
-    const Vec2 c = packing.center(id);
+namespace detail {
+
+std::optional<std::array<DiskId, 2>> first_conflict(const Packing& packing) {
+  for (const DiskId id : packing.ids()) {
+    const double r = packing.radius(id);
     DiskId other = kNoDisk;
-    packing.any_near(c, packing.max_radius(), [&](const Neighbor& n) {
-      if (n.id != id && is_conflict(n.d2, std::min(packing.radius(id), n.radius))) other = n.id;
+    packing.any_near(packing.center(id), r, [&](const Neighbor& n) {
+      if (n.id != id && is_conflict(n.d2, std::min(r, n.radius))) other = n.id;
       return other != kNoDisk;
     });
-    if (other != kNoDisk) {
-      msg << "disks at (" << c.x << ", " << c.y << ") and (" << packing.center(other).x << ", "
-          << packing.center(other).y << ") are closer than "
-          << (packing.sizing() ? "the smaller of their radii" : "r") << ": not a packing";
-      return msg.str();
-    }
-    corners_on_circle(packing, id, corners);
-    if (!corners.empty()) {
-      const Vec2 hole = packing.frame().wrap(corners.front().point);
-      msg << "not maximal: the point (" << hole.x << ", " << hole.y << ") is covered by no disk";
-      return msg.str();
-    }
+    if (other != kNoDisk) return std::array<DiskId, 2>{id, other};
   }
-  return "";
+  return std::nullopt;
 }
 
-void validate_packing(const Packing& packing, const std::string& what) {
-  const std::string defect = packing_defect(packing);
-  if (defect.empty()) return;
-  // A hole is what a packing made by other means most often has: say how to get one.
-  const bool hole = defect.rfind("not maximal", 0) == 0;
-  if (hole) throw InvalidInput(what + ": " + defect + "; start from a maximal sample", InvalidInput::Remedy::sample);
-  throw InvalidInput(what + ": " + defect);
-}
-
-bool is_maximal(const Packing& packing) {
-  if (packing.empty() || uncovered_boundary_point(packing)) return false;
+std::optional<std::string> first_hole(const Packing& packing) {
+  if (packing.empty()) return "the whole domain";
+  if (const auto hole = uncovered_boundary_point(packing)) return "the boundary point " + point_text(*hole);
   std::vector<Corner> corners;
-  for (DiskId id = 0; id < packing.id_bound(); ++id) {
-    if (!packing.alive(id)) continue;
+  for (const DiskId id : packing.ids()) {
     corners_on_circle(packing, id, corners);
-    if (!corners.empty()) return false;
+    if (!corners.empty()) return "the point " + point_text(packing.frame().wrap(corners.front().point));
   }
-  return true;
+  return std::nullopt;
 }
+
+}  // namespace detail
+
+bool is_maximal(const Packing& packing) { return !detail::first_hole(packing); }
 
 }  // namespace disktune

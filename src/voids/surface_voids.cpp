@@ -15,6 +15,7 @@
 #include "corner_cover.h"
 #include "disktune/errors.h"
 #include "disktune/tolerance.h"
+#include "packing_checks.h"
 #include "../geometry/triangle_arrangement.h"
 
 namespace disktune {
@@ -145,7 +146,7 @@ std::optional<SurfaceVoidPoint> first_void_point(const SurfacePacking& packing) 
 
 }  // namespace
 
-bool is_maximal(const SurfacePacking& packing) { return !first_void_point(packing); }
+bool is_maximal(const SurfacePacking& packing) { return !detail::first_hole(packing); }
 
 void uncovered_on_boundary_edge(const SurfacePacking& packing, std::size_t l, std::size_t e, bool fixed_only,
                                 std::vector<BoundaryGap>& out) {
@@ -201,32 +202,21 @@ DiskId conflicting_disk(const SurfacePacking& packing, DiskId i) {
 
 }  // namespace
 
-bool is_conflict_free(const SurfacePacking& packing) {
+namespace detail {
+
+std::optional<std::array<DiskId, 2>> first_conflict(const SurfacePacking& packing) {
   for (const DiskId i : packing.ids())
-    if (conflicting_disk(packing, i) != kNoDisk) return false;
-  return true;
+    if (const DiskId j = conflicting_disk(packing, i); j != kNoDisk) return std::array<DiskId, 2>{i, j};
+  return std::nullopt;
 }
 
-std::string packing_defect(const SurfacePacking& packing) {
-  if (packing.empty()) return "no disks";
-  for (const DiskId i : packing.ids()) {
-    if (const DiskId j = conflicting_disk(packing, i); j != kNoDisk) {
-      return "the disks centered at " + detail::point_text(packing.center(i)) + " and " +
-             detail::point_text(packing.center(j)) + " cover each other's centers (a conflict)";
-    }
-  }
-  if (const auto v = first_void_point(packing)) {
-    return "the point " + detail::point_text(v->at.p) + " of triangle " + std::to_string(v->at.triangle) +
-           " is covered by no disk (the packing is not maximal)";
-  }
-  return "";
+std::optional<std::string> first_hole(const SurfacePacking& packing) {
+  if (packing.empty()) return "the whole surface";
+  const auto v = first_void_point(packing);
+  if (!v) return std::nullopt;
+  return "the point " + point_text(v->at.p) + " of triangle " + std::to_string(v->at.triangle);
 }
 
-void validate_packing(const SurfacePacking& packing, const std::string& what) {
-  const std::string defect = packing_defect(packing);
-  if (defect.empty()) return;
-  if (packing.empty()) throw InvalidInput(what + ": " + defect);
-  throw InvalidInput(what + ": " + defect + "; sample the surface again", InvalidInput::Remedy::sample);
-}
+}  // namespace detail
 
 }  // namespace disktune
