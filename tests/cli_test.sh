@@ -192,6 +192,17 @@ expect planar-missing 3 "cannot|no such|does not exist" -- "$bin" sample --domai
 sed 's/^3 3 4$/3 3 1/; s/^4 4 1$/4 4 3/' hole.poly > bad.poly
 expect planar-self-intersecting 2 "bad.poly" -- "$bin" sample --domain bad.poly --radius 0.05
 expect planar-bad-extension 2 "\.poly" -- "$bin" sample --domain hole.txt --radius 0.05
+# Far from the origin (#17): at 1e4 the same square works and its sample reads back as
+# maximal and conflict-free; at 1e10 (or a radius 1e-7 of the coordinates) it is refused.
+far() { awk -v o="$1" 'NR>=3 && NR<=10 {printf "%s %.17g %.17g\n", $1, $2+o, $3+o; next} /^1 0.5 0.5$/ {printf "1 %.17g %.17g\n", 0.5+o, 0.5+o; next} {print}' hole.poly >"far$1.poly"; }
+far 1e4
+far 1e10
+expect far-sample 0 "sample: " -- "$bin" sample --domain far1e4.poly --radius 0.05 --output far.csv
+expect far-report 0 "maximal, conflict-free" -- "$bin" report far.csv --domain far1e4.poly --radius 0.05 --json far.json
+expect far-tune 0 "reached" -- "$bin" tune --domain far1e4.poly --radius 0.05 --input far.csv --target-fraction 0.8 --output far8.csv
+expect far-domain 2 "far1e10.poly: the domain reaches 1e\+10 from the origin.*move the domain near the origin" -- "$bin" sample --domain far1e10.poly --radius 0.05 --output never.csv
+absent far-domain-output never.csv
+expect far-radius 2 "times the radius 0.005.*use a radius of at least 0.01" -- "$bin" sample --domain far1e4.poly --radius 0.005 --output never.csv
 
 # varying radii
 expect sizing-sample 0 "sizing 0.03 \+ 0.03\*x" -- "$bin" sample --domain hole.poly --sizing "0.03 + 0.03*x" --output v.csv
@@ -212,6 +223,9 @@ expect sizing-crystal 2 "crystal growth needs one radius" -- "$bin" tune --domai
 # curved surfaces: samples x,y,z,r, the restricted Delaunay mesh, the report, refusals.
 # eight.off's bounding box diagonal is 1.13: r = 0.045 is 0.04 of it (a few hundred disks).
 eight="$data/surfaces/eight.off"
+awk 'NR>2 && NF==3 {printf "%.17g %.17g %.17g\n", $1+1e10, $2+1e10, $3+1e10; next} {print}' "$eight" >far-eight.off
+expect far-surface 2 "far-eight.off: the domain reaches 1e\+10 from the origin" -- "$bin" sample --domain far-eight.off --radius 0.045 --output never.csv
+absent far-surface-output never.csv
 expect surface-sample 0 "^sample: [0-9]+ disks, eta = 0\.[0-9]+.*surface .*eight\.off \(315 vertices, 634 triangles, genus 2, closed, area 1\.018" -- "$bin" sample --domain "$eight" --radius 0.045 --seed 3 --output e.csv
 head -n 1 e.csv | grep -qx "x,y,z,r" && pass=$((pass + 1)) || { echo "FAIL surface header"; fails=$((fails + 1)); }
 expect surface-tune 0 "^tune: [0-9]+ -> 420 disks \(target 420, reached\)" -- "$bin" tune --domain "$eight" --radius 0.045 --input e.csv --target-count 420 --output e4.csv

@@ -4,8 +4,10 @@
 #include <algorithm>
 #include <cmath>
 #include <set>
+#include <string>
 #include <tuple>
 
+#include "disktune/errors.h"
 #include "disktune/packing.h"
 #include "disktune/periodic_box.h"
 #include "disktune/random.h"
@@ -39,6 +41,21 @@ std::set<Hit> grid_near(const Packing& p, const PeriodicBox& box, Vec2 q, double
     EXPECT_NEAR(n.d2, squared_distance(n.image, q), 1e-15);
   });
   return out;
+}
+
+// Far from the origin a coordinate cannot hold the 1e-9 r the checks decide with (#17):
+// refused, saying what to do; near the limit (1e6 times r) still accepted.
+TEST(Packing, RefusesCoordinatesTooFarFromTheOriginForItsRadius) {
+  const Frame far{{1e10, 1e10}, {1, 1}, false};
+  try {
+    Packing p(far, 0.01);
+    ADD_FAILURE() << "a packing at 1e10 with r = 0.01 was accepted";
+  } catch (const InvalidInput& e) {
+    EXPECT_NE(std::string(e.what()).find("move the domain near the origin"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(Packing(Frame{{-2e4, 0}, {1, 1}, false}, 0.01), InvalidInput);  // 2e6 r
+  EXPECT_NO_THROW(Packing(Frame{{9e3, 0}, {1, 1}, false}, 0.01));              // 9e5 r
+  EXPECT_NO_THROW(Packing(Frame{{0, 0}, {1, 1}, true}, 6e-5));                 // the largest box job
 }
 
 TEST(Packing, NeighbourQueriesMatchBruteForceWithImages) {

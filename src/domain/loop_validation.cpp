@@ -10,6 +10,7 @@
 
 #include "disktune/errors.h"
 #include "point_text.h"
+#include "precision.h"
 #include "segment_raster.h"
 
 namespace disktune::detail {
@@ -250,9 +251,26 @@ bool inside_loop(Vec2 p, const std::vector<Vec2>& loop) {
   return inside;
 }
 
+// Geometry a domain's own size apart must be exact where the domain lies.
+static void check_precision(const std::vector<std::vector<Vec2>>& loops) {
+  Vec2 lo = loops[0][0], hi = lo;
+  for (const auto& loop : loops) {
+    for (const Vec2 p : loop) {
+      lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
+      hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
+    }
+  }
+  const double size = std::max(hi.x - lo.x, hi.y - lo.y);
+  const double reach = std::max({std::abs(lo.x), std::abs(lo.y), std::abs(hi.x), std::abs(hi.y)});
+  std::ostringstream what;
+  what << "its size " << size;
+  if (size > 0) check_coordinates_for_scale(reach, size, what.str());
+}
+
 void validate_loops(const std::vector<std::vector<Vec2>>& loops) {
   if (loops.empty()) throw InvalidInput("a planar domain needs an outer boundary loop");
   check_vertex_counts(loops);
+  check_precision(loops);
   check_repeated_vertices(loops);
   check_spikes(loops);
   check_intersections(loops);

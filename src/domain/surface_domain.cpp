@@ -11,6 +11,7 @@
 #include "disktune/errors.h"
 #include "half_edges.h"
 #include "point_text.h"
+#include "precision.h"
 
 namespace disktune {
 namespace {
@@ -158,6 +159,12 @@ SurfaceDomain::SurfaceDomain(std::vector<Vec3> vertices, std::vector<Triangle> t
   for (const Vec3& p : vertices_) {
     lo_ = {std::min(lo_.x, p.x), std::min(lo_.y, p.y), std::min(lo_.z, p.z)};
     hi_ = {std::max(hi_.x, p.x), std::max(hi_.y, p.y), std::max(hi_.z, p.z)};
+  }
+  const double size = std::max({hi_.x - lo_.x, hi_.y - lo_.y, hi_.z - lo_.z});
+  if (size > 0) {
+    detail::check_coordinates_for_scale(
+        std::max({std::abs(lo_.x), std::abs(lo_.y), std::abs(lo_.z), std::abs(hi_.x), std::abs(hi_.y), std::abs(hi_.z)}),
+        size, "its size " + detail::number_text(size));
   }
   for (const Triangle& t : triangles_) {
     const Vec3 a = vertices_[t[0]];

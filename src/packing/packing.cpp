@@ -1,17 +1,31 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "disktune/packing.h"
 
+#include <algorithm>
 #include <cassert>
 #include <cmath>
 #include <sstream>
 
 #include "disktune/errors.h"
+#include "../domain/precision.h"
 
 namespace disktune {
 
 // Cells of a diagonal just below r_max hold one disk each in a uniform packing.
+namespace {
+
+// Checked before the grid is sized from it.
+const Frame& checked(const Frame& frame, double max_radius) {
+  const double reach = std::max({std::abs(frame.origin.x), std::abs(frame.origin.y),
+                                 std::abs(frame.origin.x + frame.extent.x), std::abs(frame.origin.y + frame.extent.y)});
+  detail::check_coordinates_for_radius(reach, max_radius);
+  return frame;
+}
+
+}  // namespace
+
 Packing::Packing(const Frame& frame, double max_radius)
-    : grid_(frame, max_radius * 0.70710678118654752 * (1 - 1e-6)), max_radius_(max_radius) {}
+    : grid_(checked(frame, max_radius), max_radius * 0.70710678118654752 * (1 - 1e-6)), max_radius_(max_radius) {}
 
 DiskId Packing::insert(Vec2 center, double radius, std::uint8_t flags) {
   assert(radius > 0 && radius <= max_radius_);

@@ -7,6 +7,7 @@
 
 #include "disktune/errors.h"
 #include "disktune/tolerance.h"
+#include "../domain/precision.h"
 
 namespace disktune {
 
@@ -146,6 +147,10 @@ SurfacePacking::SurfacePacking(std::shared_ptr<const SurfaceDomain> domain, Surf
     : index_(std::make_shared<const SurfaceIndex>(domain, index_cell(*domain, sizing))),
       sizing_(std::make_shared<const SurfaceSizing>(std::move(sizing))),
       grid_(2 * sizing_->max_radius()) {
+  const Vec3 lo = domain->bbox_min(), hi = domain->bbox_max();
+  detail::check_coordinates_for_radius(std::max({std::abs(lo.x), std::abs(lo.y), std::abs(lo.z), std::abs(hi.x),
+                                                 std::abs(hi.y), std::abs(hi.z)}),
+                                       sizing_->min_radius());
   if (!sizing_->is_constant() && sizing_->vertex_radii().size() != domain->vertices().size()) {
     throw InvalidInput("surface packing: the sizing has " + std::to_string(sizing_->vertex_radii().size()) +
                        " vertex radii but the surface has " + std::to_string(domain->vertices().size()) +
