@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <gtest/gtest.h>
 
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 
 #include "disktune/errors.h"
 #include "disktune/io.h"
@@ -117,6 +119,95 @@ TEST(AtomicWrite, ReplacesAnExistingFileWhole) {
   std::stringstream ss;
   ss << in.rdbuf();
   EXPECT_EQ(ss.str(), "new");
+}
+
+std::string text_of(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+std::size_t files_in(const fs::path& dir) {
+  return static_cast<std::size_t>(std::distance(fs::directory_iterator(dir), fs::directory_iterator()));
+}
+
+// Outputs as one transaction (#17): nothing is in place before commit, everything after;
+// a transaction given up (an exception in the command) leaves every file as it was.
+TEST(OutputTransaction, RenamesEveryOutputTogetherOrNone) {
+  TempDir dir;
+  const std::string a = dir.file("a.csv"), b = dir.file("b.json");
+  write_text(a, "old a");
+  {
+    OutputTransaction outputs;
+    write_file_atomically(a, [](std::ostream& out) { out << "new a"; });
+    write_file_atomically(b, [](std::ostream& out) { out << "new b"; });
+    EXPECT_EQ(text_of(a), "old a");  // not yet
+    EXPECT_FALSE(fs::exists(b));
+    EXPECT_EQ(files_in(dir.path), 3u);  // a, and the two temporaries
+  }  // given up
+  EXPECT_EQ(text_of(a), "old a");
+  EXPECT_FALSE(fs::exists(b));
+  EXPECT_EQ(files_in(dir.path), 1u) << "a temporary was left";
+  {
+    OutputTransaction outputs;
+    write_file_atomically(a, [](std::ostream& out) { out << "new a"; });
+    write_file_atomically(b, [](std::ostream& out) { out << "new b"; });
+    outputs.commit();
+  }
+  EXPECT_EQ(text_of(a), "new a");
+  EXPECT_EQ(text_of(b), "new b");
+  EXPECT_EQ(files_in(dir.path), 2u);
+  // A write that fails inside a transaction takes nothing else with it, but the
+  // transaction given up removes what was written before it.
+  {
+    OutputTransaction outputs;
+    write_file_atomically(a, [](std::ostream& out) { out << "newer a"; });
+    EXPECT_THROW(write_file_atomically(b, [](std::ostream&) { throw std::runtime_error("boom"); }),
+                 std::runtime_error);
+  }
+  EXPECT_EQ(text_of(a), "new a");
+  EXPECT_EQ(text_of(b), "new b");
+  EXPECT_EQ(files_in(dir.path), 2u);
+}
+
+TEST(AtomicWrite, WritesThroughASymbolicLinkAndKeepsPermissions) {
+  TempDir dir;
+  const std::string target = dir.file("real.csv"), link = dir.file("link.csv");
+  write_text(target, "old");
+  fs::permissions(target, fs::perms::owner_read | fs::perms::owner_write);
+  fs::create_symlink(target, link);
+  write_file_atomically(link, [](std::ostream& out) { out << "new"; });
+  EXPECT_TRUE(fs::is_symlink(link)) << "the link was replaced by a file";
+  EXPECT_EQ(text_of(target), "new");
+  EXPECT_EQ(fs::status(target).permissions() & fs::perms::all, fs::perms::owner_read | fs::perms::owner_write);
+  EXPECT_EQ(files_in(dir.path), 2u);
+}
+
+// What the command's SIGINT/SIGTERM handler does (plugins/cli/main.cpp): the temporaries
+// of an open transaction go, no output is replaced.
+extern "C" void remove_and_die(int sig) {
+  remove_temporary_outputs();
+  std::signal(sig, SIG_DFL);
+  std::raise(sig);
+}
+
+TEST(OutputTransaction, ASignalRemovesTheTemporaries) {
+  GTEST_FLAG_SET(death_test_style, "threadsafe");
+  TempDir dir;
+  const std::string a = dir.file("a.csv");
+  write_text(a, "old a");
+  EXPECT_EXIT(
+      {
+        std::signal(SIGTERM, remove_and_die);
+        OutputTransaction outputs;
+        write_file_atomically(a, [](std::ostream& out) { out << "new a"; });
+        write_file_atomically(dir.file("b.csv"), [](std::ostream& out) { out << "new b"; });
+        std::raise(SIGTERM);
+      },
+      ::testing::KilledBySignal(SIGTERM), "");
+  EXPECT_EQ(text_of(a), "old a");
+  EXPECT_EQ(files_in(dir.path), 1u) << "a temporary was left";
 }
 
 TEST(Svg, DrawsEveryDiskAndItsSeamImages) {

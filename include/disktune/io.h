@@ -18,8 +18,39 @@ namespace disktune {
 /// Writes `path` by calling `write` on a temporary sibling file, then renaming it into
 /// place. Throws IoError (naming the path and the reason) and removes the temporary on
 /// any failure, including an exception thrown by `write`. A path that is a device or a
-/// pipe (/dev/null, a FIFO) is written straight into instead, never replaced.
+/// pipe (/dev/null, a FIFO) is written straight into instead, never replaced; a symbolic
+/// link is written through (its target is replaced, the link stays); an existing file
+/// keeps its permissions. While an OutputTransaction is open on this thread, the
+/// temporary is kept until the transaction commits.
 void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& write);
+
+/// Several output files as one transaction: while it is open, every write_file_atomically
+/// of this thread leaves its finished temporary beside its target; commit() renames them
+/// all into place, after all were written. Destroyed without commit (an exception, a
+/// refused run), it removes the temporaries and every existing file stays as it was.
+/// Transactions do not nest.
+class OutputTransaction {
+ public:
+  OutputTransaction();
+  ~OutputTransaction();
+  OutputTransaction(const OutputTransaction&) = delete;
+  OutputTransaction& operator=(const OutputTransaction&) = delete;
+  /// Renames every written file into place, in the order written. Throws IoError when a
+  /// rename fails (the files renamed before it stay, the others are removed).
+  void commit();
+
+ private:
+  struct Staged {
+    std::string temporary, target;
+    int slot;  // where remove_temporary_outputs finds it
+  };
+  std::vector<Staged> staged_;
+  friend void write_file_atomically(const std::string&, const std::function<void(std::ostream&)>&);
+};
+
+/// Removes every temporary output file not yet renamed into place, of every thread.
+/// Async-signal-safe (only unlink), for a SIGINT or SIGTERM handler of the program.
+void remove_temporary_outputs() noexcept;
 
 /// CSV with header `x,y,r`, one live disk a line in id order, each number in the
 /// shortest form that reads back to the same double.

@@ -19,6 +19,12 @@ enum ExitCode : int { kExitOk = 0, kExitInternal = 1, kExitUsage = 2, kExitIo = 
 
 using Action = std::function<int()>;
 
+/// Runs a command with its output files as one transaction (OutputTransaction): they
+/// are renamed into place when it returns, whatever its exit code, or when it throws
+/// InternalError (what it wrote is the closest packing that passed the checks); on any
+/// other exception they are removed and every existing file stays as it was.
+int with_outputs_as_one(const Action& command);
+
 /// The domain options every command shares: --domain, --width, --height, and the
 /// radius: --radius R, or --sizing SPEC for radii that vary over the domain.
 struct DomainArgs {

@@ -16,7 +16,7 @@ int run_demo() {
   sample.domain.has_radius = true;
   sample.output = "disktune-demo/mps.csv";
   sample.svg = "disktune-demo/mps.svg";
-  if (const int rc = run_sample(sample); rc != kExitOk) return rc;
+  if (const int rc = with_outputs_as_one([&] { return run_sample(sample); }); rc != kExitOk) return rc;
 
   TuneJob tune;
   tune.domain = sample.domain;
@@ -24,7 +24,7 @@ int run_demo() {
   tune.input = sample.output;
   tune.output = "disktune-demo/tuned.csv";
   tune.svg = "disktune-demo/tuned.svg";
-  return run_tune(tune);
+  return with_outputs_as_one([&] { return run_tune(tune); });
 }
 
 }  // namespace disktune::cli

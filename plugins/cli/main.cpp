@@ -2,11 +2,41 @@
 // The `disktune` command: a thin front door over the library. Each subcommand maps its
 // flags onto library calls; errors become one clear line and a distinct exit code.
 #include <CLI/CLI.hpp>
+#include <csignal>
 #include <iostream>
 #include <new>
 
 #include "commands.h"
 #include "disktune/errors.h"
+#include "disktune/io.h"
+
+namespace {
+
+// Interrupted, the command leaves no temporary file behind and replaces no output.
+extern "C" void on_interrupt(int sig) {
+  disktune::remove_temporary_outputs();
+  std::signal(sig, SIG_DFL);
+  std::raise(sig);
+}
+
+}  // namespace
+
+namespace disktune::cli {
+
+int with_outputs_as_one(const Action& command) {
+  OutputTransaction outputs;
+  int code = 0;
+  try {
+    code = command();
+  } catch (const InternalError&) {
+    outputs.commit();
+    throw;
+  }
+  outputs.commit();
+  return code;
+}
+
+}  // namespace disktune::cli
 
 int main(int argc, char** argv) {
   using namespace disktune::cli;
@@ -32,8 +62,12 @@ int main(int argc, char** argv) {
     return kExitUsage;
   }
 
+  std::signal(SIGINT, on_interrupt);
+  std::signal(SIGTERM, on_interrupt);
+  // The demo is a pipeline of commands, each its own transaction (demo.cpp).
+  const bool demo = app.get_subcommands().empty();
   try {
-    return action();
+    return demo ? action() : with_outputs_as_one(action);
   } catch (const disktune::InvalidInput& e) {
     std::cerr << "disktune: error: " << e.what() << "\n";
     return kExitUsage;
