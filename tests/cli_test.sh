@@ -46,9 +46,32 @@ expect nan-radius 2 "radius must be" -- "$bin" sample --radius nan --output z.cs
 expect big-radius 2 "meet its own periodic image" -- "$bin" sample --radius 0.5 --output z.csv
 absent big-radius-output z.csv
 expect tiny-radius 2 "too small" -- "$bin" sample --radius 1e-7 --output z.csv
-# A job larger than the memory it may use: a clear message and exit 2, no file.
-expect out-of-memory 2 "out of memory" -- bash -c 'ulimit -v 400000 && exec "$0" "$@"' "$bin" sample --radius 0.0002 --output z.csv
+# A job larger than the memory it may use: refused before any work, from its estimate
+# and the limit the process has (here RLIMIT_AS)...
+expect memory-limit 2 "radius 0.0002 is too small for the 1 x 1 box: the job needs about 1\.7e7 disks \(~[0-9.]+ GiB\) but [0-9.]+ MiB are available; use r >= 0\.00[0-9]+, a smaller domain, or allow more memory \(--max-memory SIZE\)" -- bash -c 'ulimit -v 400000 && exec "$0" "$@"' "$bin" sample --radius 0.0002 --output z.csv
+absent memory-limit-output z.csv
+# ...and when the guard is overruled, running out is still a clear message, exit 2, no file.
+expect out-of-memory 2 "out of memory" -- bash -c 'ulimit -v 400000 && exec "$0" "$@"' "$bin" sample --radius 0.0002 --max-memory 100G --output z.csv
 absent out-of-memory-output z.csv
+# Every domain kind and sizing is guarded, at once (before: GBs allocated, or minutes of
+# work; `timeout` stops a run the guard misses).
+expect memory-radius 2 "radius 0.0001 is too small .* needs about 7e7 disks .* but 1 GiB are available.*--max-memory" -- timeout 20 "$bin" sample --radius 1e-4 --max-memory 1G --output z.csv
+absent memory-radius-output z.csv
+expect memory-tune 2 "needs about 1e6 disks .* but 200 MiB are available" -- timeout 20 "$bin" tune --radius 0.001 --target-fraction 0.8 --max-memory 200M --output z.csv
+expect memory-sizing 2 "the radii of the sizing \"1e-05\" are too small for the 1 x 1 box: the job needs about 7e9 disks" -- timeout 20 "$bin" sample --sizing 1e-5 --output z.csv
+absent memory-sizing-output z.csv
+expect memory-expression 2 "the radii of the sizing .* are too small for the 1 x 1 box: the job needs about [0-9.e]+ disks .*raise the smallest radius, 1e-6, to at least [0-9.e-]+ \(darts" -- timeout 20 "$bin" sample --sizing "max(1e-6, 0.02*sqrt((x-0.5)^2 + (y-0.5)^2))" --output z.csv
+expect memory-surface 2 "radius 1e-5 is too small for this surface of area 1\.018" -- timeout 20 "$bin" sample --domain "$data/surfaces/eight.off" --radius 1e-5 --output z.csv
+expect memory-surface-sizing 2 "radius 1e-5 is too small for this surface of area 1\.018: the job needs about 7\.1e9 disks" -- timeout 20 "$bin" tune --domain "$data/surfaces/eight.off" --sizing 1e-5 --target-fraction 0.7 --output z.csv
+absent memory-surface-output z.csv
+expect memory-sweep 2 "radius 0.0001 is too small .*--max-memory" -- timeout 20 "$bin" sweep --radius 1e-4 --eta 0 --max-memory 1G
+expect memory-size-zero 2 "--max-memory must be a positive size in bytes, or with K, M, G or T .*not '0'" -- "$bin" sample --radius 0.05 --max-memory 0
+expect memory-size-negative 2 "--max-memory must be a positive size" -- "$bin" sample --radius 0.05 --max-memory -1G
+expect memory-size-unit 2 "--max-memory must be a positive size.*not '8X'" -- "$bin" sample --radius 0.05 --max-memory 8X
+expect memory-size-text 2 "--max-memory must be a positive size" -- "$bin" tune --radius 0.05 --target-count 100 --max-memory lots
+expect memory-size-ok 0 "^sample: [0-9]+ disks" -- "$bin" sample --radius 0.05 --max-memory 1.5GiB --output z.csv
+expect memory-size-bytes 0 "^tune: [0-9]+ -> 300 disks" -- "$bin" tune --radius 0.05 --target-count 300 --max-memory 500000000
+rm -f z.csv
 expect bad-box 2 "width and height must be" -- "$bin" sample --width -1 --radius 0.1
 expect no-radius 2 "radius" -- "$bin" sample --output z.csv
 expect unknown-option 2 "--frobnicate|frobnicate" -- "$bin" sample --radius 0.1 --frobnicate
@@ -218,6 +241,12 @@ expect sizing-empty 2 "^disktune: error: --sizing: the sizing is empty: give a r
 expect sizing-steep 2 "gradation" -- "$bin" sample --domain hole.poly --sizing "0.01 + 0.8*x" --output z.csv
 absent sizing-steep-output z.csv
 expect sizing-warning 0 "warning: the sizing's gradation L = 0.4" -- "$bin" sample --domain hole.poly --sizing "0.01 + 0.4*x" --output z.csv
+# A sizing whose smallest radius is far below its largest: its dart cells (as small as
+# the smallest radius, over the whole domain) and neighbour grid (cells as wide as the
+# largest) are counted too.
+rm -f z.csv
+expect memory-boundary 2 "the radii of the sizing .*boundary grading.* are too small for this domain of area 0\.84: the job needs about [0-9.e]+ disks \(~[0-9.]+ [TPE]iB\) but .* available; raise the smallest radius, 1e-6, to at least [0-9.e-]+ \(darts are thrown on cells of its size" -- timeout 20 "$bin" sample --domain hole.poly --sizing boundary:1e-6,0.05,0.1 --output z.csv
+absent memory-boundary-output z.csv
 expect sizing-crystal 2 "crystal growth needs one radius" -- "$bin" tune --domain hole.poly --sizing "0.03 + 0.03*x" --input v.csv --target-fraction 0.8 --method crystal
 
 # curved surfaces: samples x,y,z,r, the restricted Delaunay mesh, the report, refusals.

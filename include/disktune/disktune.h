@@ -23,6 +23,7 @@
 #include "disktune/random.h"
 #include "disktune/remesh.h"
 #include "disktune/report_pictures.h"
+#include "disktune/resources.h"
 #include "disktune/restricted_delaunay.h"
 #include "disktune/sampling.h"
 #include "disktune/sizing.h"

@@ -21,8 +21,9 @@ struct InvalidInput : Error {
   /// parameters other than the one at fault: the message says so in the library's
   /// words, and a front end may add its own name for it (the command line adds its
   /// flag). `sample`: start from a packing the library sampled (sampling.h,
-  /// surface_sampling.h).
-  enum class Remedy { none, radius, sizing, domain, box_size, sample };
+  /// surface_sampling.h). `memory`: larger radii, a smaller domain, or more memory
+  /// allowed than the machine reports (check_resources, resources.h).
+  enum class Remedy { none, radius, sizing, domain, box_size, sample, memory };
 
   explicit InvalidInput(const std::string& what, Remedy remedy = Remedy::none, std::string value = {})
       : Error(what), remedy_(remedy), value_(std::move(value)) {}

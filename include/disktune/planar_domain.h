@@ -47,7 +47,8 @@ class PlanarDomain {
   /// Throws InvalidInput unless r is finite and positive, no two corners (polygon
   /// vertices, of any loops) are closer than r (a disk sits on every corner, so they
   /// would conflict; the message names the pair), and a maximal packing at r would
-  /// hold at most 2e8 disks.
+  /// hold at most 4e9 disks (the most a packing can number; whether it fits in memory
+  /// is check_resources's question, resources.h).
   void validate_radius(double r) const;
 
  private:

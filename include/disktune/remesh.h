@@ -24,6 +24,9 @@ struct RemeshOptions {
   std::uint64_t seed = 1;
   /// The tuning's schedule, and a progress callback that can cancel.
   TuneOptions tune;
+  /// The memory the job may use, in bytes; 0: what the process may still allocate
+  /// (available_memory). A larger job is refused before any work (check_resources).
+  double max_memory = 0;
 };
 
 struct RemeshResult {

@@ -89,10 +89,20 @@ void check_gradation(const SizingStats& stats, double limit = 0.5);
 double density_integral(const Sizing& sizing, const Frame& frame, const PlanarDomain* domain,
                         int samples = 250000);
 
+/// The largest integral of 4 / (pi r(x)^2) over one cell of a grid of cells at most
+/// `cell` wide over the frame, laid out as SpatialGrid lays out its cells: the disk
+/// count at relative density 1 in the fullest cell. From the cells between
+/// measure_sizing's grid points (each adds its share to the cell holding its center),
+/// or, for cells smaller than those, the largest 4 / (pi r^2) found times a cell's area.
+/// Throws InvalidInput as density_integral does, or unless `cell` is finite and positive.
+double densest_cell_integral(const Sizing& sizing, const Frame& frame, const PlanarDomain* domain,
+                             double cell, int samples = 250000);
+
 /// The disk count whose relative density is eta in a varying-radius domain:
 /// eta * integral of 4 / (pi r(x)^2) over the domain, which is count_for_area_fraction
 /// for a constant r (density_integral does the integral). Throws InvalidInput unless
-/// eta is finite and positive and the count is between 1 and 2e8.
+/// eta is finite and positive and the count is between 1 and the most disks a packing
+/// can number (4e9).
 std::size_t count_for_density(double eta, const Sizing& sizing, const Frame& frame,
                               const PlanarDomain* domain, int samples = 250000);
 

@@ -63,6 +63,10 @@ SurfaceSizing curvature_sizing(const SurfaceDomain& domain, const CurvatureSizin
 /// shortest-path pass from the smallest radii outward); never raises one.
 void limit_gradation(const SurfaceDomain& domain, std::vector<double>& radii, double gradation);
 
+/// The integral of 4 / (pi r^2) over the surface: the disk count at area fraction 1
+/// (exact for a constant sizing, else the edge-midpoint rule on every triangle).
+double density_integral(const SurfaceSizing& sizing, const SurfaceDomain& domain);
+
 /// The command line's --sizing for a surface: a number (constant),
 /// "curvature" or "curvature:RMIN,RMAX", else an expression in x, y, z.
 SurfaceSizing parse_surface_sizing(const std::string& spec, const SurfaceDomain& domain);

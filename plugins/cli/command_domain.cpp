@@ -43,6 +43,7 @@ std::string in_flags(const InvalidInput& e, const std::string& option) {
     case InvalidInput::Remedy::domain: text += " (--domain)"; break;
     case InvalidInput::Remedy::box_size: text += " (--width, --height)"; break;
     case InvalidInput::Remedy::sample: text += " ('disktune sample')"; break;
+    case InvalidInput::Remedy::memory: text += " (--max-memory SIZE)"; break;
   }
   return text;
 }
@@ -82,26 +83,9 @@ CommandDomain open_surface(const DomainArgs& args) {
     d.surface_sizing = std::make_shared<const SurfaceSizing>(
         with_flags("--sizing", [&] { return parse_surface_sizing(args.sizing, *d.surface); }));
   }
-  // A maximal sample holds about 0.55 A / (pi r^2 / 4) disks: refuse, before any grid is
-  // built, radii so small that it could not fit in memory.
-  const double kMaxDisks = 2e8, pi = 3.14159265358979323846;
-  const double r_min = d.surface_sizing->min_radius();
-  const double most = 0.55 * d.surface->area() / (pi * r_min * r_min / 4);
-  if (!(most <= kMaxDisks)) {
-    std::ostringstream msg;
-    msg.precision(4);
-    if (d.surface_sizing->is_constant()) {
-      msg << "radius " << r_min;
-    } else {
-      msg << "the smallest radius " << r_min << " of the " << d.radius_text();
-    }
-    msg << " is too small for the surface "
-        << args.kind << " of area " << d.surface->area() << ": a maximal sample would hold up to "
-        << most << " disks, more than the " << kMaxDisks << " this machine can hold; use r >= "
-        << std::sqrt(0.55 * d.surface->area() / (pi / 4 * kMaxDisks)) * 1.0001;
-    throw InvalidInput(msg.str());
-  }
-  d.unit = density_unit(d.empty_surface_packing());
+  d.need = estimate_resources(*d.surface, *d.surface_sizing);
+  if (args.guarded) check_memory(d.need, args.max_memory);
+  d.unit = d.need.unit;
   return d;
 }
 
@@ -136,15 +120,20 @@ CommandDomain open_domain(const DomainArgs& args) {
     throw InvalidInput("give the disk radius with --radius R, or radii that vary with --sizing SPEC "
                        "(one of the two)");
   }
+  // What a sample needs is known, and refused when too much, before anything is built
+  // for it (a packing's grid alone grows as 1 / r^2).
   if (args.sizing.empty()) {
     d.radius = args.radius;
+    d.need = d.box ? estimate_resources(*d.box, d.radius) : estimate_resources(*d.planar, d.radius);
+    if (args.guarded) check_memory(d.need, args.max_memory);
     d.box ? d.box->validate_radius(d.radius) : d.planar->validate_radius(d.radius);
-    d.unit = density_unit(d.empty_packing(), d.area());
   } else {
     d.sizing = std::make_shared<const Sizing>(with_flags("--sizing", [&] { return parse_sizing(args.sizing, d.planar); }));
-    SizingStats stats;  // sampling the sizing refuses L >= 1/2
-    d.unit = density_unit(sized_packing(d.box ? d.box->frame() : d.planar->frame(), d.planar, d.sizing, &stats),
-                          d.area());
+    const Frame& frame = d.box ? d.box->frame() : d.planar->frame();
+    const SizingStats stats = measure_sizing(*d.sizing, frame, d.planar.get());
+    check_gradation(stats);  // L >= 1/2: no angle bound
+    d.need = d.box ? estimate_resources(*d.box, *d.sizing) : estimate_resources(*d.planar, *d.sizing);
+    if (args.guarded) check_memory(d.need, args.max_memory);
     if (stats.lipschitz > 0.25) {
       std::fprintf(stderr,
                    "disktune: warning: the sizing's gradation L = %.3g is above 0.25: the smallest "
@@ -152,7 +141,16 @@ CommandDomain open_domain(const DomainArgs& args) {
                    stats.lipschitz, angle_bound_degrees(stats.lipschitz));
     }
   }
+  d.unit = d.need.unit;  // density_unit's figure, without building a packing
   return d;
+}
+
+void check_memory(const ResourceEstimate& estimate, double max_memory) {
+  with_flags("", [&] { check_resources(estimate, max_memory > 0 ? max_memory : available_memory()); });
+}
+
+void check_memory(const CommandDomain& domain, const DomainArgs& args, double disks) {
+  check_memory(domain.need.tuned_to(disks), args.max_memory);
 }
 
 std::string CommandDomain::describe() const {

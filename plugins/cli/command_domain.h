@@ -14,6 +14,7 @@
 #include "disktune/packing.h"
 #include "disktune/periodic_box.h"
 #include "disktune/planar_domain.h"
+#include "disktune/resources.h"
 #include "disktune/sizing.h"
 #include "disktune/surface_packing.h"
 #include "disktune/tuning.h"
@@ -29,6 +30,7 @@ struct CommandDomain {
   double radius = 0;                           // --radius (0 with a sizing)
   std::shared_ptr<const Sizing> sizing;        // --sizing
   double unit = 0;                             // the count at area fraction 1 (density_unit)
+  ResourceEstimate need;                       // what a maximal sample of it needs
 
   double area() const { return box ? box->area() : planar ? planar->area() : surface->area(); }
   /// "1 x 1 periodic box", "planar domain FILE (...)" or "surface FILE (...)".
@@ -61,8 +63,17 @@ struct CommandDomain {
 bool names_surface(const DomainArgs& args);
 
 /// Opens the domain named by the options (reads and validates a domain file, parses
-/// and checks the sizing). Throws InvalidInput unless exactly one of --radius and
-/// --sizing is given.
+/// and checks the sizing, estimates what a sample needs). Throws InvalidInput unless
+/// exactly one of --radius and --sizing is given, and, for a command that samples or
+/// tunes (args.guarded), when a maximal sample would not fit (check_memory), before
+/// anything is allocated for it.
 CommandDomain open_domain(const DomainArgs& args);
+
+/// Throws InvalidInput, with the flags that change it, when `estimate` needs more than
+/// `max_memory` bytes (0: the memory available, available_memory) or more than the
+/// neighbour grid takes (check_resources).
+void check_memory(const ResourceEstimate& estimate, double max_memory);
+/// The same for the domain's sample tuned to `disks`.
+void check_memory(const CommandDomain& domain, const DomainArgs& args, double disks);
 
 }  // namespace disktune::cli

@@ -32,8 +32,17 @@ struct DomainArgs {
   double width = 1, height = 1, radius = 0;
   bool has_radius = false;  // --radius was given
   std::string sizing;
+  // Commands that sample or tune check the job against memory before any work.
+  bool guarded = false;    // this command does (add_memory_option)
+  double max_memory = 0;   // --max-memory in bytes; 0: what the machine has (available_memory)
 };
 void add_domain_options(CLI::App* cmd, DomainArgs& domain);
+/// --max-memory SIZE (bytes, or with K, M, G, T: powers of 1024) on a command that
+/// samples or tunes, into `bytes`.
+void add_memory_option(CLI::App* cmd, double& bytes);
+/// The bytes SIZE means ("8G", "500M", "1.5GiB", "1048576"), or a negative number when
+/// it is not a positive size.
+double memory_size(const std::string& text);
 
 /// A validator for a whole number written in decimal digits only, from low to high
 /// (options.cpp); `what` names the option in the message.

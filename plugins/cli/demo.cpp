@@ -14,6 +14,7 @@ int run_demo() {
   SampleJob sample;
   sample.domain.radius = 0.01;
   sample.domain.has_radius = true;
+  sample.domain.guarded = true;
   sample.output = "disktune-demo/mps.csv";
   sample.svg = "disktune-demo/mps.svg";
   if (const int rc = with_outputs_as_one([&] { return run_sample(sample); }); rc != kExitOk) return rc;

@@ -4,6 +4,8 @@
 // text first.
 #include <CLI/CLI.hpp>
 
+#include <cctype>
+#include <cmath>
 #include <cstdint>
 #include <string>
 
@@ -31,6 +33,44 @@ CLI::Option* add_seed_option(CLI::App* cmd, std::uint64_t& seed) {
   return cmd->add_option("--seed", seed, "Random seed (0 to 2^64-1); the same seed gives the same output")
       ->check(whole_number(0, UINT64_MAX, "--seed"))
       ->capture_default_str();
+}
+
+double memory_size(const std::string& text) {
+  // Digits with an optional fraction, then an optional unit: K, M, G or T, alone or
+  // followed by B or iB (binary either way, as ulimit and free count).
+  std::size_t i = 0;
+  while (i < text.size() && (std::isdigit(static_cast<unsigned char>(text[i])) || text[i] == '.')) ++i;
+  const std::string number = text.substr(0, i);
+  std::string unit = text.substr(i);
+  for (char& c : unit) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  if (number.empty() || number.find_first_of("0123456789") == std::string::npos ||
+      number.find('.') != number.rfind('.'))
+    return -1;
+  double scale = 1;
+  if (!unit.empty() && unit != "B") {
+    const std::string prefixes = "KMGT";
+    const std::size_t p = prefixes.find(unit[0]);
+    const std::string rest = unit.substr(1);
+    if (p == std::string::npos || !(rest.empty() || rest == "B" || rest == "IB")) return -1;
+    scale = std::pow(1024.0, static_cast<double>(p + 1));
+  }
+  const double bytes = std::stod(number) * scale;
+  return bytes >= 1 && std::isfinite(bytes) ? bytes : -1;
+}
+
+void add_memory_option(CLI::App* cmd, double& bytes) {
+  cmd->add_option_function<std::string>(
+         "--max-memory", [&bytes](const std::string& text) { bytes = memory_size(text); },
+         "Memory the job may use: bytes, or with K, M, G, T (powers of 1024), e.g. 8G, 500M. "
+         "Jobs estimated to need more are refused before any work; by default the memory "
+         "available (MemAvailable, the process's limits and its cgroup's, the smallest)")
+      ->check(CLI::Validator(
+          [](std::string& text) -> std::string {
+            return memory_size(text) > 0 ? ""
+                                         : "--max-memory must be a positive size in bytes, or with K, M, G "
+                                           "or T (e.g. 8G, 500M), not '" + text + "'";
+          },
+          "SIZE"));
 }
 
 }  // namespace disktune::cli

@@ -66,6 +66,8 @@ void add_sample_command(CLI::App& app, Action& action) {
   CLI::App* cmd = app.add_subcommand(
       "sample", "Make a maximal Poisson-disk sample (MPS) and write it as CSV (x,y,r).");
   add_domain_options(cmd, job->domain);
+  job->domain.guarded = true;
+  add_memory_option(cmd, job->domain.max_memory);
   add_seed_option(cmd, job->seed);
   cmd->add_option("--output,-o", job->output, "CSV file to write (header x,y,r; x,y,z,r on a surface)");
   cmd->add_option("--svg", job->svg, "Also draw the packing as an SVG picture (not on a surface)");

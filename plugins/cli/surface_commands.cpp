@@ -141,8 +141,8 @@ int run_surface_tune(const TuneJob& job) {
   refuse_svg(job.svg, "tune");
   check_output_folder(job.output);
   const CommandDomain domain = open_domain(job.domain);
-  const std::size_t target =
-      target_count(job.target, domain.empty_surface_packing());  // fail early
+  const std::size_t target = target_count_for_unit(job.target, domain.unit);  // fail early
+  check_memory(domain, job.domain, static_cast<double>(target));
   Rng rng(job.seed);
   const auto t0 = std::chrono::steady_clock::now();
   SurfacePacking packing =

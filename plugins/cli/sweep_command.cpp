@@ -9,11 +9,13 @@
 #include <sstream>
 #include <vector>
 
+#include "command_domain.h"
 #include "commands.h"
 #include "disktune/cvt_reference.h"
 #include "disktune/density.h"
 #include "disktune/io.h"
 #include "disktune/mesh.h"
+#include "disktune/resources.h"
 #include "disktune/quality.h"
 #include "disktune/sampling.h"
 #include "disktune/spectrum.h"
@@ -28,6 +30,7 @@ struct SweepArgs {
   int cvt_iterations = 100;
   std::vector<double> etas{0.31, 0.35, 0.45, 0, 0.65, 0.75, 0.80, 0.85, 0.89};  // 0: the MPS
   std::string output;
+  double max_memory = 0;  // --max-memory; 0: what the machine has
 };
 
 struct Row {
@@ -94,10 +97,12 @@ int run_sweep(const SweepArgs& args) {
   check_output_folder(args.output);
   const PeriodicBox box(1, 1);
   const double r = args.radius;
-  box.validate_radius(r);
+  ResourceEstimate need = estimate_resources(box, r);
   for (double eta : args.etas) {
-    if (eta != 0) target_count(Target::area_fraction(eta), r, box.area());  // fail early
+    if (eta != 0) need = need.tuned_to(target_count(Target::area_fraction(eta), r, box.area()));  // fail early
   }
+  check_memory(need, args.max_memory);
+  box.validate_radius(r);
   Rng rng(args.seed);
   const auto t0 = std::chrono::steady_clock::now();
   const Packing mps = sample_mps(box, r, rng);
@@ -150,6 +155,7 @@ void add_sweep_command(CLI::App& app, Action& action) {
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   add_seed_option(cmd, args->seed);
+  add_memory_option(cmd, args->max_memory);
   cmd->add_option("--output,-o", args->output, "Also write the table to this Markdown file");
   cmd->callback([args, &action] { action = [args] { return run_sweep(*args); }; });
 }

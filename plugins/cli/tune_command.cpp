@@ -45,7 +45,8 @@ int run_tune(const TuneJob& job) {
   check_output_folder(job.output);
   check_output_folder(job.svg);
   const CommandDomain domain = open_domain(job.domain);
-  const std::size_t target = target_count(job.target, domain.empty_packing(), domain.area());  // fail early
+  const std::size_t target = target_count_for_unit(job.target, domain.unit);  // fail early
+  check_memory(domain, job.domain, static_cast<double>(target));
   Rng rng(job.seed);
   const auto t0 = std::chrono::steady_clock::now();
   Packing packing = job.input.empty() ? domain.sample(rng) : domain.read(job.input, true);
@@ -111,6 +112,8 @@ void add_tune_command(CLI::App& app, Action& action) {
       "Tune a maximal packing to exactly the number of disks asked for: disk injection to go "
       "denser, disk ejection to go sparser.");
   add_domain_options(cmd, args->domain);
+  args->domain.guarded = true;
+  add_memory_option(cmd, args->domain.max_memory);
   auto* count = cmd->add_option("--target-count", args->target_count, "Exact number of disks wanted")
                     ->check(whole_number(1, UINT64_MAX, "--target-count"));
   auto* fraction = cmd->add_option("--target-fraction", args->target_fraction,

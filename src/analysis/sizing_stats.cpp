@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "../domain/point_text.h"
+#include "../domain/radius_limits.h"
 #include "disktune/errors.h"
 #include "disktune/sizing.h"
 
@@ -17,7 +18,6 @@ namespace disktune {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr double kMaxCount = 2e8;  // the packings' limit (PlanarDomain::validate_radius)
 
 // A lattice of about `samples` nodes over the frame with near-square cells. A bounded
 // frame puts nodes on its edges (where boundary grading has its extremes); a periodic
@@ -154,20 +154,21 @@ void check_gradation(const SizingStats& stats, double limit) {
                      "must also match across the box's edges (see docs/sizing.md)");
 }
 
-double density_integral(const Sizing& sizing, const Frame& frame, const PlanarDomain* domain,
-                        int samples) {
-  const Lattice lat(frame, samples);
-  // Midpoint rule over the cells between the nodes measure_sizing samples. Cells whose
-  // center is outside the domain are left out; the mean over the others is scaled by
-  // the domain's exact area, so a constant r gives A / (pi r^2 / 4) exactly.
-  double sum = 0;
+namespace {
+
+// Calls f(center, 4 / (pi r^2)) for every cell between the lattice's nodes whose center
+// lies in the domain (the midpoint rule of the density integrals below); returns how
+// many there were, and throws when there were none.
+template <class F>
+long long for_each_cell_density(const Lattice& lat, const Sizing& sizing, const Frame& frame,
+                                const PlanarDomain* domain, F&& f) {
   long long inside = 0;
   for (long long j = 0; j < lat.steps_y(); ++j) {
     for (long long i = 0; i < lat.steps_x(); ++i) {
       const Vec2 c = lat.point(i, j, true);
       if (domain && !domain->contains(c)) continue;
       const double r = radius_at(sizing, c);
-      sum += 4 / (kPi * r * r);
+      f(c, 4 / (kPi * r * r));
       ++inside;
     }
   }
@@ -176,8 +177,49 @@ double density_integral(const Sizing& sizing, const Frame& frame, const PlanarDo
                        " lies inside the domain, so the density integral of the sizing \"" +
                        sizing.description() + "\" cannot be computed; pass the domain's own frame");
   }
+  return inside;
+}
+
+}  // namespace
+
+double density_integral(const Sizing& sizing, const Frame& frame, const PlanarDomain* domain,
+                        int samples) {
+  const Lattice lat(frame, samples);
+  // Midpoint rule over the cells between the nodes measure_sizing samples. Cells whose
+  // center is outside the domain are left out; the mean over the others is scaled by
+  // the domain's exact area, so a constant r gives A / (pi r^2 / 4) exactly.
+  double sum = 0;
+  const long long inside =
+      for_each_cell_density(lat, sizing, frame, domain, [&](Vec2, double density) { sum += density; });
   const double area = domain ? domain->area() : frame.extent.x * frame.extent.y;
   return area * sum / static_cast<double>(inside);
+}
+
+double densest_cell_integral(const Sizing& sizing, const Frame& frame, const PlanarDomain* domain,
+                             double cell, int samples) {
+  if (!std::isfinite(cell) || !(cell > 0)) {
+    throw InvalidInput("the cell size " + short_number(cell) + " must be finite and positive");
+  }
+  const Lattice lat(frame, samples);
+  // The cells as SpatialGrid lays them out: a whole number per side, at most 32768.
+  auto cells = [&](double len) { return static_cast<long long>(std::clamp(std::ceil(len / cell), 1.0, 32768.0)); };
+  const long long nx = cells(frame.extent.x), ny = cells(frame.extent.y);
+  const double hx = frame.extent.x / static_cast<double>(nx), hy = frame.extent.y / static_cast<double>(ny);
+  if (nx * ny >= lat.steps_x() * lat.steps_y()) {
+    // Cells no larger than the lattice's: the density is about constant over one.
+    double densest = 0;
+    for_each_cell_density(lat, sizing, frame, domain, [&](Vec2, double d) { densest = std::max(densest, d); });
+    return densest * hx * hy;
+  }
+  // Each lattice cell adds its share to the grid cell holding its center.
+  std::vector<double> sum(static_cast<std::size_t>(nx * ny), 0.0);
+  const double share = lat.hx() * lat.hy();
+  for_each_cell_density(lat, sizing, frame, domain, [&](Vec2 c, double d) {
+    const long long i = std::clamp(static_cast<long long>((c.x - frame.origin.x) / hx), 0LL, nx - 1);
+    const long long j = std::clamp(static_cast<long long>((c.y - frame.origin.y) / hy), 0LL, ny - 1);
+    sum[static_cast<std::size_t>(j * nx + i)] += d * share;
+  });
+  return *std::max_element(sum.begin(), sum.end());
 }
 
 double angle_bound_degrees(double lipschitz) {
@@ -197,10 +239,10 @@ std::size_t count_for_density(double eta, const Sizing& sizing, const Frame& fra
                        sizing.description() +
                        "\" asks for no disk at all; raise eta or make r smaller");
   }
-  if (!(count <= kMaxCount)) {
+  if (!(count <= detail::kMaxDisks)) {
     throw InvalidInput("relative density eta = " + short_number(eta) + " with the sizing \"" +
                        sizing.description() + "\" asks for " + short_number(count) +
-                       " disks, above the limit of 2e8; make r larger");
+                       " disks, more than the 4e9 a packing can number; make r larger");
   }
   return static_cast<std::size_t>(std::llround(count));
 }

@@ -14,15 +14,14 @@ void check_radius_for_area(double r, double area, const std::string& domain) {
     msg << "radius must be a finite positive number, got " << r;
     throw InvalidInput(msg.str());
   }
-  // A maximal packing holds about 0.7 A / r^2 disks: past 2e8 (some 20 GB) the request
-  // cannot be meant, and the grids would not fit in memory.
-  constexpr double kMaxDisks = 2e8;
+  // A maximal packing holds about 0.7 A / r^2 disks. Past kMaxDisks the ids and cell
+  // indices would overflow, whatever the memory; below it, check_resources decides.
   const double expected = 0.7 * area / (r * r);
   if (expected > kMaxDisks) {
     std::ostringstream msg;
     msg.precision(4);
     msg << "radius " << r << " is too small for " << domain << ": a maximal packing would hold about "
-        << expected << " disks, more than the " << kMaxDisks << " this machine can hold; use r >= "
+        << expected << " disks, more than the " << kMaxDisks << " a packing can number; use r >= "
         << std::sqrt(0.7 * area / kMaxDisks) * 1.0001;
     throw InvalidInput(msg.str());
   }

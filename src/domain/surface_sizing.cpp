@@ -113,6 +113,24 @@ double SurfaceSizing::radius(const SurfaceDomain& domain, Vec3 p, std::size_t t)
          sum;
 }
 
+double density_integral(const SurfaceSizing& sizing, const SurfaceDomain& domain) {
+  constexpr double pi = 3.14159265358979323846;
+  if (sizing.is_constant()) return domain.area() / (pi * sizing.max_radius() * sizing.max_radius() / 4);
+  // The integral of 4 / (pi r^2) by the edge-midpoint rule on every triangle.
+  double sum = 0;
+  for (std::size_t t = 0; t < domain.triangles().size(); ++t) {
+    const auto& tri = domain.triangles()[t];
+    const Vec3 a = domain.vertices()[tri[0]], b = domain.vertices()[tri[1]], c = domain.vertices()[tri[2]];
+    double mean = 0;
+    for (const Vec3 m : {(a + b) * 0.5, (b + c) * 0.5, (c + a) * 0.5}) {
+      const double r = sizing.radius(domain, m, t);
+      mean += 4 / (pi * r * r) / 3;
+    }
+    sum += mean * 0.5 * norm(cross(b - a, c - a));
+  }
+  return sum;
+}
+
 SurfaceSizing surface_expression_sizing(const SurfaceDomain& domain, const std::string& expression) {
   const detail::Formula formula(expression, true);
   const auto& pts = domain.vertices();

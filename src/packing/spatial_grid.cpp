@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cassert>
 
+#include "disktune/errors.h"
+
 namespace disktune {
 
 SpatialGrid::SpatialGrid(const Frame& frame, double max_cell_size) : frame_(frame) {
@@ -50,8 +52,15 @@ void SpatialGrid::remove(DiskId id, Vec2 p) {
 
 void SpatialGrid::grow() {
   const int old_cap = capacity_;
+  // The counts are 16-bit: a cell takes 32768 disks at most. More means radii that vary
+  // by a factor of some 300 within the grid (its cells are as wide as the largest
+  // radius); check_resources refuses that before sampling, this stops anything else.
+  if (old_cap >= 32768) {
+    throw InvalidInput("more than 32768 disks in one cell of the neighbour grid, whose cells are as wide as the "
+                       "largest radius: the radii vary too much; make the smallest radius larger or the largest "
+                       "smaller");
+  }
   const int new_cap = old_cap * 2;
-  assert(new_cap <= 0xFFFF && "SpatialGrid: cell occupancy beyond any sane packing");
   std::vector<Slot> slots(count_.size() * new_cap);
   for (std::size_t c = 0; c < count_.size(); ++c) {
     std::copy_n(&slots_[c * old_cap], count_[c], &slots[c * new_cap]);

@@ -217,23 +217,7 @@ bool SurfacePacking::covered(Vec3 q, DiskId ignore1, DiskId ignore2) const {
 }
 
 double density_unit(const SurfacePacking& packing) {
-  const SurfaceDomain& d = packing.domain();
-  const SurfaceSizing& sizing = packing.sizing();
-  const double pi = 3.14159265358979323846;
-  if (sizing.is_constant()) return d.area() / (pi * sizing.max_radius() * sizing.max_radius() / 4);
-  // The integral of 4 / (pi r^2) by the edge-midpoint rule on every triangle.
-  double sum = 0;
-  for (std::size_t t = 0; t < d.triangles().size(); ++t) {
-    const auto& tri = d.triangles()[t];
-    const Vec3 a = d.vertices()[tri[0]], b = d.vertices()[tri[1]], c = d.vertices()[tri[2]];
-    double mean = 0;
-    for (const Vec3 m : {(a + b) * 0.5, (b + c) * 0.5, (c + a) * 0.5}) {
-      const double r = sizing.radius(d, m, t);
-      mean += 4 / (pi * r * r) / 3;
-    }
-    sum += mean * 0.5 * norm(cross(b - a, c - a));
-  }
-  return sum;
+  return density_integral(packing.sizing(), packing.domain());
 }
 
 }  // namespace disktune

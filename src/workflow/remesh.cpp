@@ -4,9 +4,9 @@
 #include <string>
 #include <vector>
 
-#include "../domain/radius_limits.h"
 #include "disktune/density.h"
 #include "disktune/errors.h"
+#include "disktune/resources.h"
 #include "disktune/restricted_delaunay.h"
 #include "disktune/surface_tuning.h"
 
@@ -21,13 +21,17 @@ RemeshResult remesh(std::shared_ptr<const SurfaceDomain> surface, std::size_t ve
   }
   RemeshResult out;
   out.radius = radius_for_count(vertex_count, surface->area(), options.area_fraction);
+  const SurfaceSizing sizing = SurfaceSizing::constant(out.radius);
   try {
-    detail::check_radius_for_area(out.radius, surface->area(), "this surface");
+    const ResourceEstimate need =
+        estimate_resources(*surface, sizing).tuned_to(static_cast<double>(vertex_count));
+    check_resources(need, options.max_memory > 0 ? options.max_memory : available_memory());
   } catch (const InvalidInput& e) {
-    throw InvalidInput("remesh: " + std::to_string(vertex_count) + " vertices are too many: " + e.what());
+    throw InvalidInput("remesh: " + std::to_string(vertex_count) + " vertices are too many: " + e.what(),
+                       e.remedy());
   }
   Rng rng(options.seed);
-  SurfacePacking packing = sample_mps(surface, SurfaceSizing::constant(out.radius), rng);
+  SurfacePacking packing = sample_mps(surface, sizing, rng);
   out.tuning = tune(packing, Target::count(vertex_count), rng, options.tune);
 
   std::vector<Vec3> samples;
