@@ -118,7 +118,9 @@ TEST(Ejection, CrystalEjectionKeepsTheInvariantsAfterEveryStep) {
         ASSERT_LE(p.size(), last);
         last = p.size();
         if (++steps % 9 == 0) {
-          ASSERT_TRUE(valid(box, p, steps)) << w << "x" << h << " seed " << seed;
+          // box.width(): C++17 lambdas cannot capture structured bindings (clang).
+          ASSERT_TRUE(valid(box, p, steps))
+              << box.width() << "x" << box.height() << " seed " << seed;
         }
       });
       EXPECT_EQ(p.size(), start - removed);
@@ -161,7 +163,8 @@ TEST(Injection, CrystalGrowthKeepsTheInvariantsAfterEveryStepAndGrowsOneCrystal)
         ASSERT_GE(p.size(), last);
         last = p.size();
         if (++steps % 7 == 0) {
-          ASSERT_TRUE(valid(box, p, steps)) << w << "x" << h << " r=" << r << " seed " << seed;
+          ASSERT_TRUE(valid(box, p, steps))
+              << box.width() << "x" << box.height() << " r=" << p.max_radius() << " seed " << seed;
         }
       });
       EXPECT_EQ(p.size(), start + added);

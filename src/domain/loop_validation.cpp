@@ -78,6 +78,25 @@ void check_vertex_counts(const std::vector<std::vector<Vec2>>& loops) {
   }
 }
 
+// Corners so far apart that their difference overflows (x = -1e308 and 1e308) leave the
+// grids below no finite cell size, and their cell indices undefined (found while fuzzing,
+// #17).
+void check_extent(const std::vector<std::vector<Vec2>>& loops) {
+  Vec2 lo = loops[0][0], hi = lo;
+  for (const auto& loop : loops) {
+    for (const Vec2 p : loop) {
+      lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
+      hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
+    }
+  }
+  if (!std::isfinite(hi.x - lo.x) || !std::isfinite(hi.y - lo.y)) {
+    std::ostringstream msg;
+    msg << "the corners span from " << point_text(lo) << " to " << point_text(hi)
+        << ", farther than a double can measure; scale the coordinates down";
+    throw InvalidInput(msg.str());
+  }
+}
+
 // Sorting all vertices finds repeats in O(n log n), across loops too.
 void check_repeated_vertices(const std::vector<std::vector<Vec2>>& loops) {
   struct Entry {
@@ -143,8 +162,11 @@ void check_intersections(const std::vector<std::vector<Vec2>>& loops) {
   CellSpec grid;
   grid.origin = lo;
   const double n = static_cast<double>(segs.size());
-  grid.h = std::min(total_length / n, std::sqrt((hi.x - lo.x) * (hi.y - lo.y) / n));
-  // The outer loop is at least twice as long as the box is wide, so nx, ny <= n/2 + 1.
+  // No smaller than the box's longer side / n either, so nx, ny <= n + 1: with the square
+  // root alone, a box 1 wide and 7.7e121 long got 1.8e61 rows, more than an int64 holds
+  // (found while fuzzing, #17).
+  grid.h = std::max(std::min(total_length / n, std::sqrt((hi.x - lo.x) * (hi.y - lo.y) / n)),
+                    std::max(hi.x - lo.x, hi.y - lo.y) / n);
   grid.nx = static_cast<std::int64_t>((hi.x - lo.x) / grid.h) + 1;
   grid.ny = static_cast<std::int64_t>((hi.y - lo.y) / grid.h) + 1;
   const double pad = 1e-9 * grid.h;
@@ -270,6 +292,7 @@ static void check_precision(const std::vector<std::vector<Vec2>>& loops) {
 void validate_loops(const std::vector<std::vector<Vec2>>& loops) {
   if (loops.empty()) throw InvalidInput("a planar domain needs an outer boundary loop");
   check_vertex_counts(loops);
+  check_extent(loops);
   check_precision(loops);
   check_repeated_vertices(loops);
   check_spikes(loops);

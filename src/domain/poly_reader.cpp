@@ -224,13 +224,15 @@ PlanarDomain read_poly(const std::string& path) {
   }
   for (std::size_t k = 1; k < loops.size(); ++k) {
     const auto& loop = domain.loops()[k];
-    const auto [lo_x, hi_x] =
+    // The loop's bounding box (plain pairs: C++17 lambdas cannot capture structured
+    // bindings, which only g++ accepts).
+    const auto x_range =
         std::minmax_element(loop.begin(), loop.end(), [](Vec2 a, Vec2 b) { return a.x < b.x; });
-    const auto [lo_y, hi_y] =
+    const auto y_range =
         std::minmax_element(loop.begin(), loop.end(), [](Vec2 a, Vec2 b) { return a.y < b.y; });
     const bool marked = std::any_of(f.holes.begin(), f.holes.end(), [&](Vec2 p) {
-      return p.x >= lo_x->x && p.x <= hi_x->x && p.y >= lo_y->y && p.y <= hi_y->y &&
-             detail::inside_loop(p, loop);
+      return p.x >= x_range.first->x && p.x <= x_range.second->x && p.y >= y_range.first->y &&
+             p.y <= y_range.second->y && detail::inside_loop(p, loop);
     });
     if (!marked) {
       std::ostringstream msg;

@@ -72,6 +72,12 @@ Grid read_grid(std::istream& in, const std::string& path) {
     reader.fail("the grid's rectangle is empty: x0 < x1 and y0 < y1 are needed" +
                 std::string(kFormat));
   }
+  // Points are placed by (x - x0) / (x1 - x0): an infinite width made that NaN, and its
+  // cell index undefined (found while fuzzing, #17).
+  if (!std::isfinite(g.x1 - g.x0) || !std::isfinite(g.y1 - g.y0)) {
+    reader.fail("the grid's rectangle is too large: x1 - x0 and y1 - y0 must be finite" +
+                std::string(kFormat));
+  }
   for (long long j = 0; j < g.ny; ++j) {
     if (!reader.next(words)) {
       reader.fail("the file ends after " + std::to_string(j) +

@@ -2,7 +2,10 @@
 // The only place OpenMesh's readers are compiled (read_surface_openmesh).
 // GCC 12 warns inside OpenMesh's property vectors (VectorT's default constructor leaves
 // its elements unset on purpose): a false positive from inlined library code.
+// (GCC only: clang has no such warning and would warn about the pragma.)
+#if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
 

@@ -1,0 +1,87 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Inputs the fuzz targets (tests/fuzz/) found to crash a reader, reduced to what matters:
+// each is read again here and must give a domain or sizing, or InvalidInput, as
+// documented; under the sanitizers (cmake/setup.sh test) a relapse also shows as the
+// sanitizer's report. The inputs stay in the fuzz corpora as well.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "disktune/errors.h"
+#include "disktune/planar_domain.h"
+#include "disktune/sizing.h"
+#include "disktune/surface_io.h"
+#include "disktune/surface_packing.h"
+#include "disktune/surface_sizing.h"
+#include "test_util.h"
+
+namespace disktune {
+namespace {
+
+using test::TempDir;
+
+std::string written(const TempDir& dir, const std::string& name, const std::string& text) {
+  const std::string path = dir.file(name);
+  std::ofstream(path, std::ios::binary) << text;
+  return path;
+}
+
+// A quadrilateral 1 wide and 7.7e121 long: the segment grid of the loop validation took
+// sqrt(area / n) as its cell side, which gave more rows than an int64 counts (undefined
+// behaviour). The domain is valid and now reads.
+TEST(FuzzRegression, PolyDomainFarLongerThanWide) {
+  TempDir dir;
+  const std::string path = written(dir, "thin.poly",
+                                   "4 2 0 0\n"
+                                   "1 0 0\n"
+                                   "2 1 0\n"
+                                   "3 1 7.7e121\n"
+                                   "4 0 1\n"
+                                   "4 0\n"
+                                   "1 1 2\n2 2 3\n3 3 4\n4 4 1\n"
+                                   "0\n");
+  const PlanarDomain domain = read_poly(path);
+  EXPECT_TRUE(domain.contains({0.5, 0.5}));
+  EXPECT_FALSE(domain.contains({-1e121, 0.5}));  // (the tolerance is relative to the size)
+  EXPECT_NEAR(domain.distance_to_boundary({0.5, 0.5}), 0.5, 1e-12);
+}
+
+// Corners at x = -1e308 and 1e308: the width overflowed, so the segment grid's cell count
+// was NaN (undefined as an int64). The file is refused.
+TEST(FuzzRegression, PolyDomainWiderThanADouble) {
+  TempDir dir;
+  const std::string path = written(dir, "wide.poly",
+                                   "3 2 0 0\n1 -1e308 0\n2 1e308 0\n3 0 1\n"
+                                   "3 0\n1 1 2\n2 2 3\n3 3 1\n");
+  const std::string msg = test::message_of([&] { read_poly(path); });
+  EXPECT_NE(msg.find("farther than a double can measure"), std::string::npos) << msg;
+}
+
+// A grid from -1e308 to 1e308: x1 - x0 overflows, so a point's place (x - x0) / (x1 - x0)
+// was NaN and its cell index undefined. The file is refused instead.
+TEST(FuzzRegression, SizingGridWiderThanADouble) {
+  TempDir dir;
+  const std::string path = written(dir, "wide.txt", "2 2 -1e308 0 1e308 1\n1 1\n1 1\n");
+  const std::string msg = test::message_of([&] { grid_sizing(path); });
+  EXPECT_NE(msg.find("line 1: the grid's rectangle is too large"), std::string::npos) << msg;
+}
+
+// A surface sample at x = 1e300: the grid that finds the triangles near a point cast
+// x / cell to an int64 (undefined beyond 2^63). The point is refused as off the surface.
+TEST(FuzzRegression, SurfaceCsvPointFarAway) {
+  TempDir dir;
+  const std::string path = written(dir, "far.csv", "x,y,z,r\n0.2,0.2,0,0.25\n1e300,0,0,0.25\n");
+  auto triangle =
+      std::make_shared<const SurfaceDomain>(std::vector<Vec3>{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}},
+                                            std::vector<SurfaceDomain::Triangle>{{0, 1, 2}});
+  SurfacePacking packing(triangle, SurfaceSizing::constant(0.25));
+  const std::string msg = test::message_of([&] { read_surface_csv(path, packing); });
+  EXPECT_NE(msg.find("far.csv:3: point"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("lies farther than"), std::string::npos) << msg;
+}
+
+}  // namespace
+}  // namespace disktune
