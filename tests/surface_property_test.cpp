@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "disktune/surface_io.h"
 #include "disktune/surface_tuning.h"
 #include "disktune/surface_voids.h"
 #include "surface_checks.h"
@@ -94,15 +95,17 @@ TEST(SurfaceVoids, AHoleWhoseVerticesAllLieOnThirdCirclesIsFound) {
   }
 }
 
-// The reproducer of #21: sampled with seed 11 at r = 0.03 (794 disks), ejected to 607
-// with seed 11, as `disktune sample` and `disktune tune -i` do; the sifting phase once
-// placed a disk whose circle passed exactly through a void's crossing and left a cusp of
-// void that the library's own checks called covered.
+// The reproducer of #21: sampled with seed 11 at r = 0.03 (794 disks, by the sampler of
+// that time: tests/data/samples/README.md), ejected to 607 with seed 11, as `disktune
+// sample` and `disktune tune -i` do; the sifting phase once placed a disk whose circle
+// passed exactly through a void's crossing and left a cusp of void that the library's
+// own checks called covered.
 TEST(SurfaceTune, SeedElevenEjectionOfEightStaysMaximalAfterEveryOperation) {
   const auto domain = surface_file("eight.off");
-  Rng rng(11);
-  SurfacePacking packing = sample_mps(domain, SurfaceSizing::constant(0.03), rng);
+  SurfacePacking packing(domain, SurfaceSizing::constant(0.03));
+  read_surface_csv(std::string(DISKTUNE_DATA_DIR) + "/../tests/data/samples/eight_seed11_r003.csv", packing);
   ASSERT_EQ(packing.size(), 794u);
+  ASSERT_TRUE(surface_report(packing).ok()) << surface_report(packing).summary();
   Rng tune_rng(11);
   TuneOptions options;
   std::size_t operations = 0;

@@ -84,19 +84,21 @@ TEST(SurfaceMps, SameSeedSameSample) {
   for (const DiskId id : p.ids()) EXPECT_EQ(p.center(id), q.center(id));
 }
 
-// MPS, then ejection to 0.6 and injection to 1.4 times its count (the paper reports
+// MPS, then ejection to 0.62 and injection to 1.4 times its count (the paper reports
 // -38 % and +44 % on a surface; docs/surfaces.md has what is reached where), on the
 // genus-2 surface and the open one, each result checked by the oracle and meshed (a
-// manifold restricted Delaunay mesh of the input's genus). The radii are
-// the largest at which 0.6 is reached for every seed tried (docs/surfaces.md): with
-// fewer disks, curvature and the boundary leave less room.
+// manifold restricted Delaunay mesh of the input's genus). The radii are the largest
+// at which the ejection was reached for every seed tried (docs/surfaces.md): with fewer
+// disks, curvature and the boundary leave less room. (Until the sampler was made
+// unbiased (#15) its MPS held about 3 % more disks, and 0.6 of that count asked for
+// the area fraction, about 0.335 on eight.off, that 0.62 of today's does.)
 TEST(SurfaceTune, EjectionAndInjectionReachExactCounts) {
   const Case cases[] = {{"eight.off", 0.015}, {"mesh_with_border.off", 0.008}};
   for (const Case& c : cases) {
     const auto domain = surface_file(c.file);
     Rng rng(1);
     const SurfacePacking mps = sample_mps(domain, SurfaceSizing::constant(c.r_over_diagonal * diagonal(*domain)), rng);
-    for (const double factor : {0.6, 1.4}) {
+    for (const double factor : {0.62, 1.4}) {
       SCOPED_TRACE(std::string(c.file) + " x" + std::to_string(factor));
       SurfacePacking packing = mps;
       const std::size_t goal = static_cast<std::size_t>(std::lround(factor * mps.size()));

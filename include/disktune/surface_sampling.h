@@ -11,8 +11,9 @@
 namespace disktune {
 
 /// A maximal Poisson-disk sample of the surface: the open boundary curves first (1D,
-/// fixed disks), then darts over the surface by area, then every void filled at its
-/// void points until none is left. Conflict-free and maximal.
+/// fixed disks), then darts over the surface by area and over ever smaller cells around
+/// the uncovered part, then one disk at a uniform point of each void left (never at a
+/// void's vertex, which would bias the spacing). Conflict-free and maximal.
 SurfacePacking sample_mps(std::shared_ptr<const SurfaceDomain> domain,
                                   const SurfaceSizing& sizing, Rng& rng);
 

@@ -7,6 +7,7 @@
 // maximality, and each is exactly on the surface.
 #pragma once
 
+#include <array>
 #include <vector>
 
 #include "disktune/surface_packing.h"
@@ -23,6 +24,12 @@ struct SurfaceVoidPoint {
 /// Appends the void points of triangle t; the disks in `ignore` count as absent.
 void void_points_in_triangle(const SurfacePacking& packing, std::size_t t,
                              const std::vector<DiskId>& ignore, std::vector<SurfaceVoidPoint>& out);
+
+/// Appends the void points of `cell`, a triangle inside triangle t of the domain (in its
+/// plane): the vertices of the cell's uncovered part, so none exactly when one disk or
+/// several together cover the whole cell.
+void void_points_in_cell(const SurfacePacking& packing, std::size_t t, const std::array<Vec3, 3>& cell,
+                         std::vector<SurfaceVoidPoint>& out);
 
 /// Appends the void points within distance R of q (on every triangle near q).
 void void_points_near(const SurfacePacking& packing, Vec3 q, double R,

@@ -18,8 +18,10 @@ struct GridCell {
   Vec2 lo;
 };
 
-// A point of the void next to the uncovered corner x: darts into the bounding box of
-// the uncovered corners near x (the void there lies in their hull), else x.
+// A uniform point of the void next to the uncovered corner x: darts into the bounding
+// box of the uncovered corners near x (the void there lies in their hull), then into ever
+// smaller squares around x. Only a void thinner than a millionth of r gets its corner x,
+// which would put the center on two circles (a biased spacing).
 Vec2 point_in_void(const Packing& packing, Vec2 x, Rng& rng) {
   const double r = packing.radius_at(x);
   std::vector<Corner> corners;
@@ -29,9 +31,12 @@ Vec2 point_in_void(const Packing& packing, Vec2 x, Rng& rng) {
     lo = {std::min(lo.x, c.point.x), std::min(lo.y, c.point.y)};
     hi = {std::max(hi.x, c.point.x), std::max(hi.y, c.point.y)};
   }
-  for (int t = 0; t < 16; ++t) {
-    const Vec2 z{lo.x + uniform01(rng) * (hi.x - lo.x), lo.y + uniform01(rng) * (hi.y - lo.y)};
-    if (packing.inside(z) && !packing.covered(z)) return z;
+  for (double half = 0; half > 1e-6 * r || half == 0; half = (half == 0 ? r / 4 : half / 4)) {
+    if (half > 0) lo = x - Vec2{half, half}, hi = x + Vec2{half, half};
+    for (int t = 0; t < 16; ++t) {
+      const Vec2 z{lo.x + uniform01(rng) * (hi.x - lo.x), lo.y + uniform01(rng) * (hi.y - lo.y)};
+      if (packing.inside(z) && !packing.covered(z)) return z;
+    }
   }
   return x;  // on two circles, in no disk: a valid center
 }

@@ -120,6 +120,23 @@ void void_points_in_triangle(const SurfacePacking& packing, std::size_t t, const
     }
 }
 
+void void_points_in_cell(const SurfacePacking& packing, std::size_t t, const std::array<Vec3, 3>& cell,
+                         std::vector<SurfaceVoidPoint>& out) {
+  const TrianglePlane plane(cell[0], cell[1], cell[2]);
+  const Vec3 middle = (cell[0] + cell[1] + cell[2]) * (1.0 / 3);
+  double R = 0;
+  for (const Vec3 c : cell) R = std::max(R, norm(c - middle));
+  thread_local std::vector<DiskId> near;
+  thread_local std::vector<Ball> balls;
+  disks_near(packing, middle, R, {}, near);
+  balls.clear();
+  for (const DiskId j : near) balls.push_back({packing.center(j), packing.radius(j), j});
+  const double tol = kRelTol * packing.max_radius();
+  for_each_arrangement_vertex(plane, balls, tol, [&](Vec3 p, DiskId a, DiskId b) {
+    if (!vertex_covered(packing, plane, p, a, b, near, tol)) out.push_back({{p, static_cast<std::uint32_t>(t)}, a, b});
+  });
+}
+
 void void_points_near(const SurfacePacking& packing, Vec3 q, double R, const std::vector<DiskId>& ignore,
                       std::vector<SurfaceVoidPoint>& out) {
   thread_local std::vector<std::uint32_t> tris;
