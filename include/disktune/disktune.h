@@ -30,6 +30,7 @@
 #include "disktune/spatial_grid.h"
 #include "disktune/spectrum.h"
 #include "disktune/surface_domain.h"
+#include "disktune/surface_features.h"
 #include "disktune/surface_geometry.h"
 #include "disktune/surface_io.h"
 #include "disktune/surface_mesh.h"

@@ -1,0 +1,55 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Sharp features of a surface (issue #15): the edges where the surface folds by more
+// than an angle, chained into curves that run from corner to corner (or close on
+// themselves). Meshers keep such curves as mesh edges; here they are the curves that
+// feature disks will sit on, as open boundaries do.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+#include "disktune/surface_domain.h"
+
+namespace disktune {
+
+/// A mesh edge by its two vertices, the smaller index first.
+using MeshEdge = std::array<std::size_t, 2>;
+
+/// A chain of feature edges: consecutive vertices share a feature edge. An open curve
+/// starts and ends at corners and has none inside; a closed one (no corner on it)
+/// comes back from its last vertex to its first.
+struct FeatureCurve {
+  std::vector<std::size_t> vertices;
+  bool closed = false;
+};
+
+struct SurfaceFeatures {
+  std::vector<MeshEdge> edges;        // sorted, each once
+  std::vector<std::size_t> corners;   // sorted vertex indices
+  std::vector<FeatureCurve> curves;   // every feature edge in exactly one curve
+};
+
+struct FeatureOptions {
+  /// An interior edge is a feature when the normals of its two triangles differ by more
+  /// than this (degrees; CGAL's detect_sharp_edges uses the same rule and default).
+  double angle = 60;
+  /// A vertex on exactly two feature edges is a corner when the curve turns there by
+  /// more than this (degrees between the directions of its two edges).
+  double corner_angle = 60;
+};
+
+/// The feature edges of `domain` by the angle rule, chained into curves. A vertex is a
+/// corner when it lies on one or three or more feature edges, on a feature edge and an
+/// open boundary, or where its curve turns by more than options.corner_angle. Throws
+/// InvalidInput unless 0 < angle < 180 and 0 < corner_angle <= 180.
+SurfaceFeatures detect_features(const SurfaceDomain& domain, const FeatureOptions& options = {});
+
+/// The same from feature edges given by their end vertices (any order; repeats are
+/// merged), as a CAD model lists them; only options.corner_angle is used. Throws
+/// InvalidInput, naming the pair, when one is not an edge between two triangles of the
+/// surface (boundary edges are boundaries already).
+SurfaceFeatures features_from_edges(const SurfaceDomain& domain, std::vector<MeshEdge> edges,
+                                    const FeatureOptions& options = {});
+
+}  // namespace disktune
