@@ -319,6 +319,19 @@ head -n 3 e.csv >esparse.csv
 expect surface-not-maximal 2 "esparse\.csv: .*not maximal: the point .* of triangle [0-9]+ is covered by no disk; start from a maximal sample \('disktune sample'\)" -- "$bin" tune --domain "$eight" --radius 0.045 --input esparse.csv --target-count 420 --output never.csv
 expect surface-sizing-curvature 2 "^disktune: error: --sizing \"curvature:0.1\": expected curvature:RMIN,RMAX" -- "$bin" sample --domain "$eight" --sizing curvature:0.1 --output never.csv
 
+# an output that names an input, or another output, is refused before any work (#17)
+"$bin" sample --radius 0.05 --seed 4 --output own.csv >/dev/null
+cp own.csv own-before.csv
+expect output-is-input 2 "--json 'own\.csv' is the file this command reads \(the points file\): writing it would replace that input" -- "$bin" report own.csv --radius 0.05 --json own.csv
+ln -sf own.csv own-link.csv
+expect output-is-input-link 2 "--svg 'own-link\.csv' is the file this command reads" -- "$bin" report own.csv --radius 0.05 --svg own-link.csv
+expect output-is-domain 2 "--output '.*square_with_hole\.poly' is the file this command reads \(--domain\)" -- "$bin" sample --domain "$data/domains/square_with_hole.poly" --radius 0.05 --output "$data/domains/../domains/square_with_hole.poly"
+expect outputs-same-file 2 "--output and --svg name the same file '\./both\.csv'" -- "$bin" sample --radius 0.05 --output both.csv --svg ./both.csv
+absent outputs-same-file-output both.csv
+cmp -s own.csv own-before.csv && pass=$((pass + 1)) || { echo "FAIL output-is-input changed own.csv"; fails=$((fails + 1)); }
+expect tune-in-place 0 "^tune: [0-9]+ -> 300 disks" -- "$bin" tune --radius 0.05 --input own.csv --output own.csv --target-count 300
+expect devices-twice 0 "^sample: " -- "$bin" sample --radius 0.05 --output /dev/null --svg /dev/null
+
 # the sweep table (tiny)
 expect sweep 0 "\| CVT at the count of eta" -- "$bin" sweep --radius 0.05 --eta 0 0.6 --cvt-iterations 5 --output sweep.md
 grep -q "lloyd_optimize_mesh_2" sweep.md && pass=$((pass + 1)) || { echo "FAIL sweep.md"; fails=$((fails + 1)); }

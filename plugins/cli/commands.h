@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "disktune/tuning.h"
 
@@ -108,5 +109,20 @@ int run_demo();
 /// Throws IoError when the folder of an output path does not exist, so that a typo
 /// costs no minutes of computing before the write fails.
 void check_output_folder(const std::string& path);
+
+/// A file a command reads or writes, with the option (or argument) that names it.
+struct NamedFile {
+  std::string option, path;
+};
+/// Throws InvalidInput, before any work, when two outputs name one file or an output
+/// names a file the command reads (it would replace that input: `report s.csv --json
+/// s.csv`). Only the output option `in_place` may name an input other than the domain
+/// (tune --output over its --input: an update, written atomically). Empty paths are
+/// skipped, and devices (/dev/null, /dev/stdout) may be named more than once.
+void check_files_apart(const std::vector<NamedFile>& inputs, const std::vector<NamedFile>& outputs,
+                       const std::string& in_place = "");
+/// The files the domain options read: --domain unless it is the periodic box, and
+/// --sizing when it names a file (a grid).
+std::vector<NamedFile> domain_files(const DomainArgs& domain);
 
 }  // namespace disktune::cli

@@ -23,6 +23,9 @@ struct MeshArgs {
 };
 
 int run_mesh(const MeshArgs& args) {
+  std::vector<NamedFile> inputs = domain_files(args.domain);
+  inputs.push_back({"the points file", args.input});
+  check_files_apart(inputs, {{"--output", args.output}});
   if (names_surface(args.domain)) return run_surface_mesh(args.input, args.domain, args.output);
   mesh_format_for_path(args.output);  // a bad extension fails before any work
   check_output_folder(args.output);

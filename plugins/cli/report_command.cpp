@@ -56,6 +56,9 @@ int run_planar_report(const ReportArgs& args, const CommandDomain& domain) {
 }
 
 int run_report(const ReportArgs& args) {
+  std::vector<NamedFile> inputs = domain_files(args.domain);
+  inputs.push_back({"the points file", args.input});
+  check_files_apart(inputs, {{"--json", args.json}, {"--svg", args.svg}});
   if (names_surface(args.domain)) return run_surface_report({args.input, args.domain, args.json, args.svg, args.png_dir, args.spectrum_window});
   check_output_folder(args.json);
   check_output_folder(args.svg);

@@ -14,6 +14,7 @@
 namespace disktune::cli {
 
 int run_sample(const SampleJob& job) {
+  check_files_apart(domain_files(job.domain), {{"--output", job.output}, {"--svg", job.svg}});
   if (names_surface(job.domain)) return run_surface_sample(job);
   check_output_folder(job.output);
   check_output_folder(job.svg);
@@ -28,14 +29,6 @@ int run_sample(const SampleJob& job) {
               domain.density_text(packing.size()).c_str(), seconds, domain.radius_text().c_str(),
               domain.describe().c_str(), job.output.empty() ? "" : " -> ", job.output.c_str());
   return kExitOk;
-}
-
-void check_output_folder(const std::string& path) {
-  if (path.empty()) return;
-  const std::filesystem::path parent = std::filesystem::path(path).parent_path();
-  if (!parent.empty() && !std::filesystem::is_directory(parent)) {
-    throw IoError("cannot write '" + path + "': folder '" + parent.string() + "' does not exist");
-  }
 }
 
 void add_domain_options(CLI::App* cmd, DomainArgs& domain) {

@@ -41,6 +41,9 @@ Method method_named(const std::string& name) {
 }  // namespace
 
 int run_tune(const TuneJob& job) {
+  std::vector<NamedFile> inputs = domain_files(job.domain);
+  inputs.push_back({"--input", job.input});
+  check_files_apart(inputs, {{"--output", job.output}, {"--svg", job.svg}}, "--output");
   if (names_surface(job.domain)) return run_surface_tune(job);
   check_output_folder(job.output);
   check_output_folder(job.svg);
