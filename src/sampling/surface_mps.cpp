@@ -8,6 +8,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <map>
 
 #include "disktune/errors.h"
 #include "disktune/surface_sampling.h"
@@ -18,60 +19,125 @@
 namespace disktune {
 namespace {
 
+// Weights with prefix sums (a Fenwick tree, appended to as gaps appear): a dart picks a
+// gap by its length in O(log n), and a gap is emptied in O(log n).
+class LengthTree {
+ public:
+  std::size_t size() const { return weight_.size(); }
+  double weight(std::size_t k) const { return weight_[k]; }
+  std::size_t push(double w) {
+    const std::size_t i = weight_.size() + 1;
+    weight_.push_back(w);
+    tree_.push_back(w + prefix(i - 1) - prefix(i - (i & (~i + 1))));
+    return i - 1;
+  }
+  void clear_weight(std::size_t k) {
+    const double d = -weight_[k];
+    weight_[k] = 0;
+    for (std::size_t i = k + 1; i < tree_.size(); i += i & (~i + 1)) tree_[i] += d;
+  }
+  double total() const { return prefix(weight_.size()); }
+  // The k whose weight holds x: prefix(k) <= x < prefix(k + 1).
+  std::size_t find(double x) const {
+    std::size_t pos = 0, step = 1;
+    while (step * 2 < tree_.size()) step *= 2;
+    for (; step > 0; step /= 2)
+      if (pos + step < tree_.size() && tree_[pos + step] <= x) x -= tree_[pos += step];
+    return pos;
+  }
+
+ private:
+  std::vector<double> weight_;
+  std::vector<double> tree_{0.0};  // 1-based
+  double prefix(std::size_t i) const {
+    double sum = 0;
+    for (; i > 0; i -= i & (~i + 1)) sum += tree_[i];
+    return sum;
+  }
+};
+
 void sample_boundary(SurfacePacking& packing, Rng& rng) {
   const SurfaceDomain& d = packing.domain();
   if (d.is_closed()) return;
-  // The gaps of each boundary edge, in loop and edge order, measured once; a new disk
-  // changes only those of the edges it reaches.
   struct Edge {
     std::size_t loop, edge;
     Vec3 a, b;
-    std::vector<BoundaryGap> gaps;
+    std::map<double, std::uint32_t> gaps;  // its live gaps by their start
   };
   std::vector<Edge> edges;
+  std::vector<BoundaryGap> gaps;
+  LengthTree lengths;
+  const auto add_gap = [&](std::size_t e, double t0, double t1) {
+    edges[e].gaps.emplace(t0, static_cast<std::uint32_t>(gaps.size()));
+    gaps.push_back({edges[e].loop, edges[e].edge, t0, t1});
+    lengths.push((t1 - t0) * norm(edges[e].b - edges[e].a));
+  };
+  // The edges in pieces of at most r_max in a grid, to find those a new disk reaches.
+  const double r_max = packing.max_radius();
+  SpaceGrid near_edges(2 * r_max);
+  std::vector<BoundaryGap> found;
   for (std::size_t l = 0; l < d.boundary_loops().size(); ++l) {
     const auto& loop = d.boundary_loops()[l];
-    for (std::size_t e = 0; e < loop.size(); ++e) {
-      edges.push_back({l, e, d.vertices()[loop[e]], d.vertices()[loop[(e + 1) % loop.size()]], {}});
-      uncovered_on_boundary_edge(packing, l, e, true, edges.back().gaps);
+    for (std::size_t k = 0; k < loop.size(); ++k) {
+      const std::size_t e = edges.size();
+      edges.push_back({l, k, d.vertices()[loop[k]], d.vertices()[loop[(k + 1) % loop.size()]], {}});
+      found.clear();
+      uncovered_on_boundary_edge(packing, l, k, true, found);
+      for (const BoundaryGap& g : found) add_gap(e, g.t0, g.t1);
+      const Vec3 a = edges[e].a, ab = edges[e].b - a;
+      const int pieces = std::max(1, static_cast<int>(std::ceil(norm(ab) / r_max)));
+      for (int p = 0; p < pieces; ++p) near_edges.insert(static_cast<std::uint32_t>(e), a + ab * ((p + 0.5) / pieces));
     }
   }
-  std::vector<double> cumulative;
-  std::vector<const BoundaryGap*> gaps;
-  for (;;) {
-    // A dart uniform over the uncovered length.
-    cumulative.clear();
-    gaps.clear();
-    double total = 0;
-    for (const Edge& e : edges) {
-      for (const BoundaryGap& g : e.gaps) {
-        total += (g.t1 - g.t0) * norm(e.b - e.a);
-        cumulative.push_back(total);
-        gaps.push_back(&g);
+  std::size_t live = 0;
+  for (std::size_t g = 0; g < gaps.size(); ++g) live += lengths.weight(g) > 0;
+  std::vector<std::uint32_t> reached;
+  while (live > 0) {
+    // A dart uniform over the uncovered length (the sums drift by rounding: a draw that
+    // lands on an emptied gap is drawn again from the live ones by a plain walk).
+    std::size_t k = lengths.find(uniform01(rng) * lengths.total());
+    if (k >= gaps.size() || lengths.weight(k) <= 0) {
+      double left = 0;
+      for (std::size_t g = 0; g < gaps.size(); ++g) left += lengths.weight(g);
+      double u = uniform01(rng) * left;
+      std::size_t last_live = 0;
+      for (k = 0; k < gaps.size(); ++k) {
+        if (lengths.weight(k) <= 0) continue;
+        if (u < lengths.weight(k)) break;
+        u -= lengths.weight(k);
+        last_live = k;
       }
+      if (k == gaps.size()) k = last_live;
     }
-    if (gaps.empty()) return;
-    const std::size_t k = std::min<std::size_t>(
-        std::upper_bound(cumulative.begin(), cumulative.end(), uniform01(rng) * total) - cumulative.begin(),
-        gaps.size() - 1);
-    const BoundaryGap g = *gaps[k];
+    const BoundaryGap g = gaps[k];
     const DiskId id =
         packing.insert(packing.index().on_boundary(g.loop, g.edge, g.t0 + (g.t1 - g.t0) * uniform01(rng)), kFixed);
     // The new disk covers one interval of each edge it reaches: cut it out of the gaps
-    // there (measuring such an edge again would cost its length over r per disk).
-    for (Edge& e : edges) {
-      const auto in = segment_in_ball(e.a, e.b, packing.center(id), packing.radius(id) * (1 + kRelTol));
+    // there.
+    const Vec3 c = packing.center(id);
+    const double r = packing.radius(id) * (1 + kRelTol);
+    reached.clear();
+    near_edges.for_each_in_box(c, r + r_max, [&](std::uint32_t e) { reached.push_back(e); });
+    std::sort(reached.begin(), reached.end());
+    reached.erase(std::unique(reached.begin(), reached.end()), reached.end());
+    for (const std::uint32_t e : reached) {
+      const auto in = segment_in_ball(edges[e].a, edges[e].b, c, r);
       if (!in) continue;
-      std::vector<BoundaryGap> left;
-      for (const BoundaryGap& g : e.gaps) {
-        if (g.t1 <= (*in)[0] || g.t0 >= (*in)[1]) {
-          left.push_back(g);
-          continue;
-        }
-        if (g.t0 < (*in)[0]) left.push_back({g.loop, g.edge, g.t0, (*in)[0]});
-        if ((*in)[1] < g.t1) left.push_back({g.loop, g.edge, (*in)[1], g.t1});
+      // The gaps meeting [in0, in1]: from the last one starting at or before in0.
+      auto& mine = edges[e].gaps;
+      auto it = mine.upper_bound((*in)[0]);
+      if (it != mine.begin()) --it;
+      std::vector<std::uint32_t> hit;
+      for (; it != mine.end() && it->first < (*in)[1]; ++it)
+        if (gaps[it->second].t1 > (*in)[0]) hit.push_back(it->second);
+      for (const std::uint32_t h : hit) {
+        const BoundaryGap old = gaps[h];
+        mine.erase(old.t0);
+        lengths.clear_weight(h);
+        --live;
+        if (old.t0 < (*in)[0]) add_gap(e, old.t0, (*in)[0]), ++live;
+        if ((*in)[1] < old.t1) add_gap(e, (*in)[1], old.t1), ++live;
       }
-      e.gaps.swap(left);
     }
   }
 }
@@ -139,8 +205,10 @@ bool covered_by_one(const SurfacePacking& packing, const std::array<Vec3, 3>& p)
   });
 }
 
-// The cells of at most `side` (longest edge) that no disk covers alone, coarse cells that
-// one disk covers dropped whole.
+// The cells that no disk covers alone, split until their longest edge is at most `side`
+// (coarse cells that one disk covers dropped whole). A sliver (longer than 64 side) stops
+// once it is no wider than `side`, however long it still is: splitting it further would
+// make (length / side)^2 cells, where its area needs a few.
 void uncovered_cells(const SurfacePacking& packing, const Cells& cells, double side, std::vector<Cell>& out) {
   std::vector<Cell> stack;
   for (std::uint32_t t = 0; t < packing.domain().triangles().size(); ++t) {
@@ -149,7 +217,8 @@ void uncovered_cells(const SurfacePacking& packing, const Cells& cells, double s
       const Cell c = stack.back();
       stack.pop_back();
       if (covered_by_one(packing, cells.corners(c))) continue;
-      if (cells.longest(c) <= side || c.level == kDeepestLevel) {
+      const bool thin_sliver = cells.longest(c) > 64 * side && 2 * cells.area(c) <= cells.longest(c) * side;
+      if (cells.longest(c) <= side || thin_sliver || c.level == kDeepestLevel) {
         out.push_back(c);
       } else {
         for (const Cell& k : Cells::children(c)) stack.push_back(k);
@@ -160,9 +229,11 @@ void uncovered_cells(const SurfacePacking& packing, const Cells& cells, double s
 
 // Darts by area into the cells, as many as there are cells; then the cells that one
 // disk now covers are dropped and the others split in four (children one disk covers
-// dropped too). Every accepted dart is uniform over the uncovered area, because the
-// cells hold all of it.
-void dart_level(SurfacePacking& packing, const Cells& cells, std::vector<Cell>& active, Rng& rng) {
+// dropped too), but for slivers longer than `side`, which go to `parked` as they are: no
+// later level throws darts at them, the void filling does. Every accepted dart is
+// uniform over the uncovered area of the cells darted at, because they hold all of it.
+void dart_level(SurfacePacking& packing, const Cells& cells, double side, std::vector<Cell>& active,
+                std::vector<Cell>& parked, Rng& rng) {
   std::vector<double> cumulative;
   cumulative.reserve(active.size());
   double total = 0;
@@ -177,8 +248,8 @@ void dart_level(SurfacePacking& packing, const Cells& cells, std::vector<Cell>& 
   std::vector<Cell> next;
   for (const Cell& c : active) {
     if (covered_by_one(packing, cells.corners(c))) continue;
-    if (c.level == kDeepestLevel) {
-      next.push_back(c);
+    if (c.level == kDeepestLevel || cells.longest(c) > side) {
+      parked.push_back(c);
       continue;
     }
     for (const Cell& k : Cells::children(c))
@@ -214,6 +285,45 @@ SurfacePoint point_in_void(const SurfacePacking& packing, const Cells& cells, co
   return found.empty() ? cells.dart(c, rng) : found.front().at;
 }
 
+// A uniform point of the void next to void point v of triangle t: darts into ever smaller
+// squares around v in the triangle's plane; v itself only for a void thinner than a
+// millionth of r.
+SurfacePoint point_near(const SurfacePacking& packing, const SurfaceVoidPoint& v, Rng& rng) {
+  const TrianglePlane& plane = packing.index().plane(v.at.triangle);
+  const Vec2 x = plane.to_plane(v.at.p);
+  const double r = packing.radius_at(v.at);
+  for (double half = r / 4; half > 1e-6 * r; half /= 4) {
+    for (int k = 0; k < 16; ++k) {
+      const Vec2 z = x + Vec2{(2 * uniform01(rng) - 1) * half, (2 * uniform01(rng) - 1) * half};
+      if (!plane.contains(z, 0)) continue;
+      const Vec3 p = plane.to_space(z);
+      if (!packing.covered(p)) return {p, v.at.triangle};
+    }
+  }
+  return v.at;
+}
+
+// The voids of a sliver cell longer than the radius: each of its void points, and those
+// each new disk makes on its circle, gets a disk near it until none is left (a disk
+// covers only part of such a cell, and searching the whole cell again after each
+// would cost its length squared).
+void fill_sliver(SurfacePacking& packing, const Cells& cells, const Cell& c, Rng& rng) {
+  std::vector<SurfaceVoidPoint> work;
+  void_points_in_cell(packing, c.triangle, cells.corners(c), work);
+  for (std::size_t i = work.size(); i > 1; --i) std::swap(work[i - 1], work[uniform_index(rng, i)]);
+  while (!work.empty()) {
+    const SurfaceVoidPoint v = work.back();
+    work.pop_back();
+    if (packing.conflicts(v.at.p)) continue;  // covered since
+    const SurfacePoint q = point_near(packing, v, rng);
+    if (packing.conflicts(q.p)) continue;
+    const DiskId id = packing.insert(q);
+    const std::size_t first = work.size();
+    void_points_near(packing, q.p, packing.radius(id) * (1 + 1e-6), {}, work);
+    for (std::size_t i = work.size(); i > first + 1; --i) std::swap(work[i - 1], work[first + uniform_index(rng, i - first)]);
+  }
+}
+
 }  // namespace
 
 SurfacePacking sample_mps(std::shared_ptr<const SurfaceDomain> domain, const SurfaceSizing& sizing, Rng& rng) {
@@ -231,16 +341,23 @@ SurfacePacking sample_mps(std::shared_ptr<const SurfaceDomain> domain, const Sur
   const Cells cells(packing.domain());
   const double smallest = sizing.min_radius();
   std::vector<Cell> active;
-  uncovered_cells(packing, cells, smallest * (1 - 1e-9), active);
-  for (int level = 0; level < 6 && !active.empty(); ++level) dart_level(packing, cells, active, rng);
-  // What the darts left: each cell still holding a void gets one disk, centered at a
-  // uniform point of that void; being within the cell, it covers all of the cell.
+  const double side = smallest * (1 - 1e-9);
+  uncovered_cells(packing, cells, side, active);
+  std::vector<Cell> parked;
+  for (int level = 0; level < 6 && !active.empty(); ++level) dart_level(packing, cells, side, active, parked, rng);
+  active.insert(active.end(), parked.begin(), parked.end());
+  // What the darts left: each cell still holding a void gets a disk centered at a
+  // uniform point of that void, which, within the cell, covers all of it; a sliver
+  // longer than the radius gets disks until no void is left.
   for (std::size_t i = active.size(); i > 1; --i) std::swap(active[i - 1], active[uniform_index(rng, i)]);
   std::vector<SurfaceVoidPoint> found;
   for (const Cell& c : active) {
-    if (!has_void(packing, cells, c, found)) continue;
-    const SurfacePoint q = point_in_void(packing, cells, c, smallest, rng);
-    if (!packing.conflicts(q.p)) packing.insert(q);
+    if (cells.longest(c) > side) {
+      fill_sliver(packing, cells, c, rng);
+    } else if (has_void(packing, cells, c, found)) {
+      const SurfacePoint q = point_in_void(packing, cells, c, smallest, rng);
+      if (!packing.conflicts(q.p)) packing.insert(q);
+    }
   }
   detail::check_sample(packing);
   return packing;

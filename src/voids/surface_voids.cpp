@@ -100,41 +100,78 @@ void collect(const SurfacePacking& packing, std::size_t t, Vec3 q, double R, con
 
 }  // namespace
 
+namespace {
+
+// Calls f(q, R) for balls of radius R, centred in the plane, that together cover the
+// triangle: the circumscribed balls of squares of side `side` in the plane's frame, a
+// band of rows at a time and only the squares meeting the triangle. Their number grows
+// with the triangle's area over side^2 plus its perimeter over side, so a long needle
+// costs its length, not its length squared.
+template <class F>
+void for_each_region(const TrianglePlane& plane, double side, F&& f) {
+  const Vec2 v[3] = {plane.corner(0), plane.corner(1), plane.corner(2)};
+  const double xmin = std::min({v[0].x, v[1].x, v[2].x});
+  const double ymin = std::min({v[0].y, v[1].y, v[2].y}), ymax = std::max({v[0].y, v[1].y, v[2].y});
+  const double R = side * std::sqrt(0.5) * (1 + 1e-9);
+  const long rows = std::max(1L, static_cast<long>(std::ceil((ymax - ymin) / side)));
+  for (long j = 0; j < rows; ++j) {
+    const double y0 = ymin + j * side, y1 = y0 + side;
+    // The triangle's x-extent within the band: its corners there and its edges' crossings.
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (int k = 0; k < 3; ++k) {
+      const Vec2 p = v[k], q = v[(k + 1) % 3];
+      if (p.y >= y0 && p.y <= y1) lo = std::min(lo, p.x), hi = std::max(hi, p.x);
+      for (const double y : {y0, y1})
+        if ((p.y - y) * (q.y - y) < 0) {
+          const double x = p.x + (q.x - p.x) * (y - p.y) / (q.y - p.y);
+          lo = std::min(lo, x), hi = std::max(hi, x);
+        }
+    }
+    if (!(lo <= hi)) continue;
+    const long first = static_cast<long>(std::floor((lo - xmin) / side));
+    const long last = static_cast<long>(std::floor((hi - xmin) / side));
+    for (long i = first; i <= last; ++i) f(plane.to_space({xmin + (i + 0.5) * side, y0 + 0.5 * side}), R);
+  }
+}
+
+// The void points of the triangle `corners` (inside domain triangle t, in its plane),
+// region by region.
+void void_points_of(const SurfacePacking& packing, std::size_t t, const std::array<Vec3, 3>& corners,
+                    const std::vector<DiskId>& ignore, std::vector<SurfaceVoidPoint>& out) {
+  const TrianglePlane plane(corners[0], corners[1], corners[2]);
+  const double tol = kRelTol * packing.max_radius();
+  thread_local std::vector<DiskId> near;
+  thread_local std::vector<Ball> balls;
+  for_each_region(plane, packing.max_radius(), [&](Vec3 q, double R) {
+    disks_near(packing, q, R, ignore, near);
+    // Only circles passing within R of q make vertices in the region.
+    balls.clear();
+    const Vec2 q2 = plane.to_plane(q);
+    for (const DiskId j : near) {
+      const auto circle = plane.section(packing.center(j), packing.radius(j));
+      if (circle && std::abs(distance(circle->center, q2) - circle->radius) <= R * (1 + kRelTol))
+        balls.push_back({packing.center(j), packing.radius(j), j});
+    }
+    const double R2 = R * R;
+    for_each_arrangement_vertex(plane, balls, tol, [&](Vec3 p, DiskId a, DiskId b) {
+      if (squared_norm(p - q) > R2) return;
+      if (!vertex_covered(packing, plane, p, a, b, near, tol)) out.push_back({{p, static_cast<std::uint32_t>(t)}, a, b});
+    });
+  });
+}
+
+}  // namespace
+
 void void_points_in_triangle(const SurfacePacking& packing, std::size_t t, const std::vector<DiskId>& ignore,
                              std::vector<SurfaceVoidPoint>& out) {
   const auto& tri = packing.domain().triangles()[t];
-  const Vec3 a = packing.domain().vertices()[tri[0]], b = packing.domain().vertices()[tri[1]],
-             c = packing.domain().vertices()[tri[2]];
-  // Regions of about one radius (a barycentric grid whose points are within R of every
-  // point of the triangle), so a large triangle costs linear, not quadratic, time in
-  // the disks on it.
-  const double longest = std::sqrt(std::max({squared_norm(b - a), squared_norm(c - b), squared_norm(a - c)}));
-  const int n = std::max(1, static_cast<int>(std::ceil(longest / packing.max_radius())));
-  const double R = longest / n * (1 + 1e-9);
-  thread_local std::vector<DiskId> near;
-  for (int i = 0; i <= n; ++i)
-    for (int j = 0; i + j <= n; ++j) {
-      const Vec3 q = a + (b - a) * (double(i) / n) + (c - a) * (double(j) / n);
-      disks_near(packing, q, R, ignore, near);
-      collect(packing, t, q, R, near, out);
-    }
+  const auto& v = packing.domain().vertices();
+  void_points_of(packing, t, {v[tri[0]], v[tri[1]], v[tri[2]]}, ignore, out);
 }
 
 void void_points_in_cell(const SurfacePacking& packing, std::size_t t, const std::array<Vec3, 3>& cell,
                          std::vector<SurfaceVoidPoint>& out) {
-  const TrianglePlane plane(cell[0], cell[1], cell[2]);
-  const Vec3 middle = (cell[0] + cell[1] + cell[2]) * (1.0 / 3);
-  double R = 0;
-  for (const Vec3 c : cell) R = std::max(R, norm(c - middle));
-  thread_local std::vector<DiskId> near;
-  thread_local std::vector<Ball> balls;
-  disks_near(packing, middle, R, {}, near);
-  balls.clear();
-  for (const DiskId j : near) balls.push_back({packing.center(j), packing.radius(j), j});
-  const double tol = kRelTol * packing.max_radius();
-  for_each_arrangement_vertex(plane, balls, tol, [&](Vec3 p, DiskId a, DiskId b) {
-    if (!vertex_covered(packing, plane, p, a, b, near, tol)) out.push_back({{p, static_cast<std::uint32_t>(t)}, a, b});
-  });
+  void_points_of(packing, t, cell, {}, out);
 }
 
 void void_points_near(const SurfacePacking& packing, Vec3 q, double R, const std::vector<DiskId>& ignore,
