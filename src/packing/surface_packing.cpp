@@ -8,6 +8,7 @@
 #include "disktune/errors.h"
 #include "disktune/tolerance.h"
 #include "../domain/precision.h"
+#include "../geometry/triangle_regions.h"
 
 namespace disktune {
 
@@ -60,14 +61,12 @@ SurfaceIndex::SurfaceIndex(std::shared_ptr<const SurfaceDomain> domain, double c
     bounds_.push_back({g, std::sqrt(std::max({squared_norm(a - g), squared_norm(b - g), squared_norm(c - g)}))});
     area += 0.5 * norm(cross(b - a, c - a));
     cumulative_area_.push_back(area);
-    // Register the cells of a barycentric grid of points at most cell/2 apart: every
-    // point of the triangle is then within cell/2 of a registered point, so within
-    // triangles_near's margin of half a cell.
-    const double longest = std::sqrt(std::max({squared_norm(b - a), squared_norm(c - b), squared_norm(a - c)}));
-    const int n = std::max(1, static_cast<int>(std::ceil(longest / (0.5 * cell))));
+    // Register the cells of the centers of regions of radius cell/2 that cover the
+    // triangle: every point of it is then within cell/2 of a registered point, so within
+    // triangles_near's margin of half a cell. (The regions follow the triangle's width:
+    // a needle costs its length, not its length squared.)
     keys.clear();
-    for (int i = 0; i <= n; ++i)
-      for (int j = 0; i + j <= n; ++j) keys.push_back(grid_.key(a + (b - a) * (double(i) / n) + (c - a) * (double(j) / n)));
+    for_each_region(planes_.back(), cell * std::sqrt(0.5) * (1 - 1e-9), [&](Vec3 q, double) { keys.push_back(grid_.key(q)); });
     std::sort(keys.begin(), keys.end());
     keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
     for (const std::uint64_t k : keys) grid_.insert_in_cell(static_cast<std::uint32_t>(t), k);
