@@ -265,7 +265,7 @@ std::vector<long> surface_goals(const SurfacePacking& p, double factor) {
     const double len = at.back();
     out.push_back(curve_goal(len, factor, [&](double u) {
       const std::size_t k = std::min<std::size_t>(std::upper_bound(at.begin(), at.end(), u * len) - at.begin() - 1, loop.size() - 1);
-      return p.radius_at(p.index().on_boundary(l, k, (u * len - at[k]) / (at[k + 1] - at[k])));
+      return p.radius_at(p.index().on_curve(l, k, (u * len - at[k]) / (at[k + 1] - at[k])));
     }, true));
   }
   return out;

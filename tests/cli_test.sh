@@ -60,7 +60,7 @@ absent memory-radius-output z.csv
 expect memory-tune 2 "needs about 1e6 disks .* but 200 MiB are available" -- timeout 20 "$bin" tune --radius 0.001 --target-fraction 0.8 --max-memory 200M --output z.csv
 expect memory-sizing 2 "the radii of the sizing \"1e-05\" are too small for the 1 x 1 box: the job needs about 7e9 disks" -- timeout 20 "$bin" sample --sizing 1e-5 --output z.csv
 absent memory-sizing-output z.csv
-expect memory-expression 2 "the radii of the sizing .* are too small for the 1 x 1 box: the job needs about [0-9.e]+ disks .*raise the smallest radius, 1e-6, to at least [0-9.e-]+ \(darts" -- timeout 20 "$bin" sample --sizing "max(1e-6, 0.02*sqrt((x-0.5)^2 + (y-0.5)^2))" --output z.csv
+expect memory-expression 2 "the radii of the sizing .* are too small for the 1 x 1 box: the job needs about [0-9.e]+ disks .*raise the smallest radius, 1e-6, to at least [0-9.e-]+ \(darts" -- timeout 20 "$bin" sample --sizing "max(1e-6, 0.02*sqrt((x-0.5)^2 + (y-0.5)^2))" --output z.csv --max-memory 20G
 expect memory-surface 2 "radius 1e-5 is too small for this surface of area 1\.018" -- timeout 20 "$bin" sample --domain "$data/surfaces/eight.off" --radius 1e-5 --output z.csv
 expect memory-surface-sizing 2 "radius 1e-5 is too small for this surface of area 1\.018: the job needs about 7\.1e9 disks" -- timeout 20 "$bin" tune --domain "$data/surfaces/eight.off" --sizing 1e-5 --target-fraction 0.7 --output z.csv
 absent memory-surface-output z.csv
@@ -270,6 +270,16 @@ expect surface-curvature-report 0 "maximal, conflict-free" -- "$bin" report sc.c
 # varying radii: centers inside larger disks are no conflict, so a sample reads back
 expect surface-curvature-eight 0 "^sample: " -- "$bin" sample --domain "$eight" --sizing curvature:0.02,0.06 --output ec.csv
 expect surface-curvature-tune 0 "reached" -- "$bin" tune --domain "$eight" --sizing curvature:0.02,0.06 --input ec.csv --target-fraction 0.6
+# Sharp features (#15): detected at 60 degrees by default, held by fixed disks; a bad
+# angle, and --features on a flat domain, are refused.
+fandisk="$data/surfaces/fandisk.off"
+expect features-default 0 "^sample: [0-9]+ disks \([1-9][0-9]* on feature curves\), .*closed, 35 feature curves and 25 corners" -- "$bin" sample --domain "$fandisk" --radius 0.02 --output fd.csv
+expect features-read 0 "^report: [0-9]+ disks \([1-9][0-9]* on feature curves\), .*maximal, conflict-free; mesh: .*manifold yes, genus 0" -- "$bin" report fd.csv --domain "$fandisk" --radius 0.02
+expect features-none 0 "^sample: [0-9]+ disks, eta .*genus 0, closed, area" -- "$bin" sample --domain "$fandisk" --radius 0.02 --features none
+expect features-angle 0 "closed, [0-9]+ feature curves" -- "$bin" sample --domain "$fandisk" --radius 0.02 --features 30
+expect features-bad 2 "--features 200: give a dihedral angle in degrees strictly between 0 and 180" -- "$bin" sample --domain "$fandisk" --radius 0.02 --features 200
+expect features-word 2 "--features sharp: give a dihedral angle" -- "$bin" sample --domain "$fandisk" --radius 0.02 --features sharp
+expect features-flat 2 "--features applies to curved surfaces only" -- "$bin" sample --domain periodic --radius 0.05 --features 60
 expect surface-boundary 0 "[0-9]+ disks \([0-9]+ on the boundary\), .*1 boundary loop" -- "$bin" sample --domain "$data/surfaces/mesh_with_border.off" --radius 4 --output mb.csv
 expect surface-boundary-read 0 "[0-9]+ disks \([1-9][0-9]* on the boundary\), .*maximal, conflict-free" -- "$bin" report mb.csv --domain "$data/surfaces/mesh_with_border.off" --radius 4
 expect flat-off-is-planar 0 "planar domain .*square_with_hole\.off" -- "$bin" sample --domain "$data/domains/square_with_hole.off" --radius 0.05

@@ -14,6 +14,7 @@
 #include "disktune/planar_domain.h"
 #include "disktune/sampling.h"
 #include "disktune/sizing.h"
+#include "disktune/surface_features.h"
 #include "disktune/surface_sampling.h"
 #include "oracle/sampling_bias.h"
 #include "surface_checks.h"
@@ -77,6 +78,22 @@ TEST(SamplingBias, SurfaceSamplesAlmostNeverPutACenterOnTwoCircles) {
       Rng rng(seed);
       const SurfacePacking p = sample_mps(domain, SurfaceSizing::constant(c.r), rng);
       expect_unbiased(std::string(c.file) + " r = " + std::to_string(c.r) + " seed " + std::to_string(seed),
+                      on_two_circles(p), p.size());
+    }
+  }
+}
+
+TEST(SamplingBias, SurfacesWithSharpFeaturesToo) {
+  for (const SurfaceCase& c : {SurfaceCase{"fandisk.off", 0.02}, SurfaceCase{"joint.off", 0.05},
+                               SurfaceCase{"elephant.off", 0.02}}) {
+    SurfaceDomain d = *test::surface_file(c.file);
+    d.set_features(detect_features(d));
+    const auto domain = std::make_shared<const SurfaceDomain>(std::move(d));
+    for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+      Rng rng(seed);
+      const SurfacePacking p = sample_mps(domain, SurfaceSizing::constant(c.r), rng);
+      expect_unbiased(std::string(c.file) + " with features, r = " + std::to_string(c.r) + " seed " +
+                          std::to_string(seed),
                       on_two_circles(p), p.size());
     }
   }

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <limits>
 #include <map>
@@ -70,17 +71,32 @@ inline SurfacePoint nearest_surface_point(const SurfacePacking& packing, Vec3 p)
   return best;
 }
 
-/// The oracle's verdict on a surface packing; the fixed disks are the boundary disks.
+/// True when p lies within tol of an edge of an open boundary loop (brute force).
+inline bool on_open_boundary(const SurfaceDomain& d, Vec3 p, double tol) {
+  for (const auto& loop : d.boundary_loops())
+    for (std::size_t k = 0; k < loop.size(); ++k) {
+      const Vec3 a = d.vertices()[loop[k]], e = d.vertices()[loop[(k + 1) % loop.size()]] - a;
+      const double t = std::clamp(dot(p - a, e) / dot(e, e), 0.0, 1.0);
+      if (norm(p - (a + e * t)) <= tol) return true;
+    }
+  return false;
+}
+
+/// The oracle's verdict on a surface packing; the fixed disks are the boundary disks
+/// (with sharp features, those of them on an open boundary edge).
 inline oracle::SurfaceReport surface_report(const SurfacePacking& packing, std::size_t probes_per_triangle = 8) {
   std::vector<oracle::Point3> centers;
   std::vector<double> radii;
   oracle::SurfaceOptions options;
   options.probes_per_triangle = probes_per_triangle;
+  const bool features = !packing.domain().features().curves.empty();
   for (const DiskId id : packing.ids()) {
     const Vec3 c = packing.center(id);
     centers.push_back({c.x, c.y, c.z});
     radii.push_back(packing.radius(id));
-    options.boundary_flags.push_back((packing.flags(id) & kFixed) ? 1 : 0);
+    bool boundary = packing.flags(id) & kFixed;
+    if (boundary && features) boundary = on_open_boundary(packing.domain(), c, 1e-9 * packing.radius(id));
+    options.boundary_flags.push_back(boundary ? 1 : 0);
   }
   if (packing.domain().is_closed()) options.boundary_flags.clear();
   return oracle::check_surface(oracle_surface(packing.domain()), centers, radii, options);

@@ -46,7 +46,7 @@ std::set<MeshEdge> expected_features(const SurfaceDomain& d, double degrees) {
 void expect_curves_partition(const SurfaceFeatures& f) {
   const std::set<std::size_t> corners(f.corners.begin(), f.corners.end());
   std::multiset<MeshEdge> walked;
-  for (const FeatureCurve& c : f.curves) {
+  for (const SurfaceCurve& c : f.curves) {
     ASSERT_GE(c.vertices.size(), c.closed ? 3u : 2u);
     const std::size_t steps = c.closed ? c.vertices.size() : c.vertices.size() - 1;
     for (std::size_t i = 0; i < steps; ++i) {
@@ -94,7 +94,7 @@ TEST(SurfaceFeatures, TheBoxHasTwelveEdgeCurvesBetweenEightCorners) {
   EXPECT_EQ(f.edges.size(), 4u * (4 + 3 + 2));  // each box edge split as its axis is
   EXPECT_EQ(f.corners.size(), 8u);
   EXPECT_EQ(f.curves.size(), 12u);
-  for (const FeatureCurve& c : f.curves) EXPECT_FALSE(c.closed);
+  for (const SurfaceCurve& c : f.curves) EXPECT_FALSE(c.closed);
   expect_curves_partition(f);
 }
 
@@ -104,7 +104,7 @@ TEST(SurfaceFeatures, ACylinderHasTwoClosedRimsAndNoCorner) {
   EXPECT_EQ(f.edges.size(), 32u);
   EXPECT_TRUE(f.corners.empty());
   ASSERT_EQ(f.curves.size(), 2u);
-  for (const FeatureCurve& c : f.curves) {
+  for (const SurfaceCurve& c : f.curves) {
     EXPECT_TRUE(c.closed);
     EXPECT_EQ(c.vertices.size(), 16u);
   }

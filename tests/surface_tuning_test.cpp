@@ -53,7 +53,7 @@ TEST(SurfaceMps, OpenBoundaryHasFixedDisksOnIt) {
   std::size_t fixed = 0;
   for (const DiskId id : packing.ids()) fixed += (packing.flags(id) & kFixed) ? 1 : 0;
   EXPECT_GT(fixed, 10u);
-  EXPECT_TRUE(uncovered_boundary(packing, true).empty());
+  EXPECT_TRUE(uncovered_curves(packing, true).empty());
   EXPECT_TRUE(surface_report(packing).boundary_ok()) << surface_report(packing).summary();
 }
 

@@ -14,6 +14,25 @@
 
 namespace disktune {
 
+/// A mesh edge by its two vertices, the smaller index first.
+using MeshEdge = std::array<std::size_t, 2>;
+
+/// A polyline of mesh vertices, consecutive ones joined by a mesh edge. An open curve runs
+/// from corner to corner (both ends may be one vertex) with no corner inside; a closed
+/// one comes back from its last vertex to its first.
+struct SurfaceCurve {
+  std::vector<std::size_t> vertices;
+  bool closed = false;
+};
+
+/// Sharp features of a surface (surface_features.h finds them): feature edges chained
+/// into curves, and the corners where curves end.
+struct SurfaceFeatures {
+  std::vector<MeshEdge> edges;        // sorted, each once
+  std::vector<std::size_t> corners;   // sorted vertex indices
+  std::vector<SurfaceCurve> curves;   // every feature edge in exactly one curve
+};
+
 class SurfaceDomain {
  public:
   using Triangle = std::array<std::size_t, 3>;
@@ -42,6 +61,17 @@ class SurfaceDomain {
   /// The sum of the components' genera.
   int genus() const;
 
+  /// Makes `features` part of the surface, as meshers see it: its curves hold fixed
+  /// disks like the open boundary, its corners a disk each. Throws InvalidInput, naming
+  /// the curve, when a curve names a missing vertex, steps along an edge that is not a
+  /// feature edge, or (open) does not end at corners. Replaces earlier features.
+  void set_features(SurfaceFeatures features);
+  const SurfaceFeatures& features() const { return features_; }
+  /// The curves that hold fixed disks (paper, section 7): every open boundary loop, cut
+  /// into open curves at the feature corners on it (a loop with none stays closed), then
+  /// every feature curve. Corners (features().corners) are the ends of the open ones.
+  const std::vector<SurfaceCurve>& fixed_curves() const { return curves_; }
+
   Vec3 bbox_min() const { return lo_; }
   Vec3 bbox_max() const { return hi_; }
   double area() const { return area_; }
@@ -51,6 +81,8 @@ class SurfaceDomain {
   std::vector<Triangle> triangles_;
   std::size_t edge_count_ = 0;
   std::vector<std::vector<std::size_t>> loops_;
+  SurfaceFeatures features_;
+  std::vector<SurfaceCurve> curves_;
   std::vector<std::size_t> component_;
   std::vector<int> genus_;
   Vec3 lo_, hi_;

@@ -13,23 +13,6 @@
 
 namespace disktune {
 
-/// A mesh edge by its two vertices, the smaller index first.
-using MeshEdge = std::array<std::size_t, 2>;
-
-/// A chain of feature edges: consecutive vertices share a feature edge. An open curve
-/// starts and ends at corners and has none inside; a closed one (no corner on it)
-/// comes back from its last vertex to its first.
-struct FeatureCurve {
-  std::vector<std::size_t> vertices;
-  bool closed = false;
-};
-
-struct SurfaceFeatures {
-  std::vector<MeshEdge> edges;        // sorted, each once
-  std::vector<std::size_t> corners;   // sorted vertex indices
-  std::vector<FeatureCurve> curves;   // every feature edge in exactly one curve
-};
-
 struct FeatureOptions {
   /// An interior edge is a feature when the normals of its two triangles differ by more
   /// than this (degrees; CGAL's detect_sharp_edges uses the same rule and default).

@@ -67,9 +67,9 @@ class SurfaceIndex {
   Vec3 closest_point(std::size_t t, Vec3 p) const;
   /// A point uniformly distributed over the surface by area (u1, u2, u3 uniform in [0, 1)).
   SurfacePoint point_by_area(double u1, double u2, double u3) const;
-  /// The point at parameter s in [0, 1] of edge k of boundary loop l (from its vertex k
-  /// to k + 1), with the triangle holding that edge.
-  SurfacePoint on_boundary(std::size_t l, std::size_t k, double s) const;
+  /// The point at parameter s in [0, 1] of edge k of fixed curve c (from its vertex k to
+  /// k + 1; domain().fixed_curves()), with a triangle holding that edge.
+  SurfacePoint on_curve(std::size_t c, std::size_t k, double s) const;
 
  private:
   std::shared_ptr<const SurfaceDomain> domain_;
@@ -80,7 +80,7 @@ class SurfaceIndex {
   };
   std::vector<Bound> bounds_;
   std::vector<double> cumulative_area_;
-  std::vector<std::vector<std::uint32_t>> boundary_triangle_;  // per loop, per edge
+  std::vector<std::vector<std::uint32_t>> curve_triangle_;  // per fixed curve, per edge
   SpaceGrid grid_;
 };
 

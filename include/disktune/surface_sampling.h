@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Maximal Poisson-disk sampling of a curved surface (paper, section 7.2). Open boundary
-// curves are sampled first with fixed disks (1D maximal sampling) and stay.
+// Maximal Poisson-disk sampling of a curved surface (paper, section 7.2). The fixed curves
+// (open boundary, sharp features) are sampled first with fixed disks and stay.
 #pragma once
 
 #include <memory>
@@ -10,10 +10,17 @@
 
 namespace disktune {
 
-/// A maximal Poisson-disk sample of the surface: the open boundary curves first (1D,
-/// fixed disks), then darts over the surface by area and over ever smaller cells around
-/// the uncovered part, then one disk at a uniform point of each void left (never at a
-/// void's vertex, which would bias the spacing). Conflict-free and maximal.
+/// The spacing of the fixed disks on sharp feature curves, in units of the local radius:
+/// below the sqrt(2) r at which the edge between two consecutive ones is sure to be in
+/// the restricted Delaunay mesh (docs/surfaces.md, "Sharp features").
+constexpr double kFeatureSpacing = 1.2;
+
+/// A maximal Poisson-disk sample of the surface: fixed disks first (one on each feature
+/// corner, each feature curve laid out evenly kFeatureSpacing r apart where that fits,
+/// then 1D darts over what is left uncovered of the fixed curves), then darts over the
+/// surface by area and over ever smaller cells around the uncovered part, then one disk
+/// at a uniform point of each void left (never at a void's vertex, which would bias the
+/// spacing). Conflict-free and maximal.
 SurfacePacking sample_mps(std::shared_ptr<const SurfaceDomain> domain,
                                   const SurfaceSizing& sizing, Rng& rng);
 

@@ -38,17 +38,17 @@ void void_points_near(const SurfacePacking& packing, Vec3 q, double R,
 /// True when no triangle has a void point: the surface is covered (up to the tolerance).
 bool is_maximal(const SurfacePacking& packing);
 
-/// The uncovered pieces of the open boundary curves, counting only fixed disks when
-/// `fixed_only`: for each loop of domain().boundary_loops() and each of its edges
-/// (from vertex k to k + 1), intervals [t0, t1] of the edge's parameter.
-struct BoundaryGap {
-  std::size_t loop, edge;
+/// The uncovered pieces of the fixed curves (domain().fixed_curves(): open boundary and
+/// features), counting only fixed disks when `fixed_only`: for each curve c and each of
+/// its edges e (from vertex e to e + 1), intervals [t0, t1] of the edge's parameter.
+struct CurveGap {
+  std::size_t curve, edge;
   double t0, t1;
 };
-std::vector<BoundaryGap> uncovered_boundary(const SurfacePacking& packing, bool fixed_only);
-/// The same for edge e of loop l alone, appended to `out`.
-void uncovered_on_boundary_edge(const SurfacePacking& packing, std::size_t l, std::size_t e, bool fixed_only,
-                                std::vector<BoundaryGap>& out);
+std::vector<CurveGap> uncovered_curves(const SurfacePacking& packing, bool fixed_only);
+/// The same for edge e of curve c alone, appended to `out`.
+void uncovered_on_curve_edge(const SurfacePacking& packing, std::size_t c, std::size_t e, bool fixed_only,
+                             std::vector<CurveGap>& out);
 
 /// True when no two disks cover each other's centers (the prior-disk rule, pairwise: a
 /// center may lie in a larger disk, which came later).

@@ -5,6 +5,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <sstream>
 
@@ -13,6 +14,7 @@
 #include "disktune/errors.h"
 #include "disktune/io.h"
 #include "disktune/sampling.h"
+#include "disktune/surface_features.h"
 #include "disktune/surface_io.h"
 #include "disktune/surface_sampling.h"
 #include "disktune/surface_tuning.h"
@@ -64,10 +66,25 @@ std::string lower_extension(const std::string& path) {
   return ext;
 }
 
+// The surface with the features --features asks for.
+std::shared_ptr<const SurfaceDomain> surface_with_features(const DomainArgs& args) {
+  SurfaceDomain surface = disktune::read_surface(args.kind);
+  if (args.features == "none") return std::make_shared<const SurfaceDomain>(std::move(surface));
+  char* end = nullptr;
+  const double angle = std::strtod(args.features.c_str(), &end);
+  if (args.features.empty() || *end != '\0' || !(angle > 0 && angle < 180)) {
+    throw InvalidInput("--features " + args.features +
+                       ": give a dihedral angle in degrees strictly between 0 and 180 (60 is the default), "
+                       "or 'none'");
+  }
+  surface.set_features(detect_features(surface, {angle, 60}));
+  return std::make_shared<const SurfaceDomain>(std::move(surface));
+}
+
 CommandDomain open_surface(const DomainArgs& args) {
   CommandDomain d;
   d.file = args.kind;
-  d.surface = std::make_shared<const SurfaceDomain>(disktune::read_surface(args.kind));
+  d.surface = surface_with_features(args);
   if (args.has_radius == !args.sizing.empty()) {
     throw InvalidInput("give the disk radius with --radius R, or radii that vary over the surface with "
                        "--sizing curvature[:RMIN,RMAX], an expression in x, y, z or a number (one of "
@@ -109,6 +126,10 @@ CommandDomain open_domain(const DomainArgs& args) {
                        "mesh) or a surface file (.off, .obj, .ply, .stl)");
   }
   if (names_surface(args)) return open_surface(args);
+  if (args.has_features) {
+    throw InvalidInput("--features applies to curved surfaces only; --domain " + args.kind +
+                       " is not one (leave --features out)");
+  }
   CommandDomain d;
   if (args.kind == "periodic") {
     d.box.emplace(args.width, args.height);
@@ -165,6 +186,11 @@ std::string CommandDomain::describe() const {
     } else {
       s << surface->boundary_loops().size() << " boundary loop"
         << (surface->boundary_loops().size() == 1 ? "" : "s");
+    }
+    const auto& f = surface->features();
+    if (!f.curves.empty()) {
+      s << ", " << f.curves.size() << " feature curve" << (f.curves.size() == 1 ? "" : "s") << " and "
+        << f.corners.size() << " corner" << (f.corners.size() == 1 ? "" : "s");
     }
     s << ", area " << surface->area() << ")";
   } else {

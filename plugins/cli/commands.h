@@ -33,6 +33,9 @@ struct DomainArgs {
   double width = 1, height = 1, radius = 0;
   bool has_radius = false;  // --radius was given
   std::string sizing;
+  // A surface's sharp features: a dihedral angle in degrees, or "none".
+  std::string features = "60";
+  bool has_features = false;  // --features was given
   // Commands that sample or tune check the job against memory before any work.
   bool guarded = false;    // this command does (add_memory_option)
   double max_memory = 0;   // --max-memory in bytes; 0: what the machine has (available_memory)

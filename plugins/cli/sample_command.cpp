@@ -52,6 +52,13 @@ void add_domain_options(CLI::App* cmd, DomainArgs& domain) {
                   "(r grows with the distance to a planar domain's boundary); docs/sizing.md. On "
                   "a surface: a number, an expression in x, y and z, or curvature[:RMIN,RMAX] "
                   "(smaller where the surface bends more)");
+  cmd->add_option("--features", domain.features,
+                  "On a surface: edges where the surface folds by more than ANGLE degrees (the "
+                  "angle between their triangles' normals) are sharp features, chained into curves "
+                  "that hold fixed disks as open boundaries do, so the mesh keeps them as edges; "
+                  "'none' for no features (docs/surfaces.md)")
+      ->capture_default_str()
+      ->each([&domain](const std::string&) { domain.has_features = true; });
 }
 
 void add_sample_command(CLI::App& app, Action& action) {

@@ -45,8 +45,12 @@ std::size_t fixed_count(const SurfacePacking& packing) {
 }
 
 std::string boundary_text(const SurfacePacking& packing) {
-  if (packing.domain().is_closed()) return "";
-  return " (" + std::to_string(fixed_count(packing)) + " on the boundary)";
+  const SurfaceDomain& d = packing.domain();
+  if (d.fixed_curves().empty()) return "";
+  const char* where = d.features().curves.empty() ? "on the boundary"
+                      : d.is_closed()             ? "on feature curves"
+                                                  : "on the boundary and feature curves";
+  return " (" + std::to_string(fixed_count(packing)) + " " + where + ")";
 }
 
 // The restricted Delaunay mesh of the samples, in id order, with their radii.
@@ -215,12 +219,14 @@ int run_surface_report(const SurfaceReportJob& job) {
       << ", \"vertices\": " << surface.vertices().size()
       << ", \"triangles\": " << surface.triangles().size() << ", \"genus\": " << surface.genus()
       << ", \"boundary_loops\": " << surface.boundary_loops().size()
+      << ", \"feature_curves\": " << surface.features().curves.size()
+      << ", \"feature_corners\": " << surface.features().corners.size()
       << ", \"area\": " << json_number(surface.area()) << "},\n"
       << "  \"sizing\": " << json_string(domain.radius_text()) << ",\n"
       << "  \"min_radius\": " << json_number(packing.sizing().min_radius()) << ",\n"
       << "  \"max_radius\": " << json_number(packing.sizing().max_radius()) << ",\n"
       << "  \"count\": " << packing.size() << ",\n"
-      << "  \"boundary_count\": " << fixed_count(packing) << ",\n"
+      << "  \"boundary_count\": " << fixed_count(packing) << ",\n"  // fixed: boundary and features
       << "  \"area_fraction\": " << json_number(eta) << ",\n"
       << "  \"relative_radius\": " << json_number(rho) << ",\n"
       << "  \"maximal\": " << (maximal ? "true" : "false") << ",\n"

@@ -133,6 +133,7 @@ SurfaceDomain::SurfaceDomain(std::vector<Vec3> vertices, std::vector<Triangle> t
   check_vertices(vertices_, triangles_);
   for_each_edge(half, [&](std::size_t, std::size_t) { ++edge_count_; });
   loops_ = chain_boundary(vertices_.size(), half);
+  set_features({});
 
   // Components through shared vertices (edges, after the fan check), numbered in
   // triangle order; then Euler's formula per component.
@@ -173,6 +174,53 @@ SurfaceDomain::SurfaceDomain(std::vector<Vec3> vertices, std::vector<Triangle> t
 }
 
 int SurfaceDomain::genus() const { return std::accumulate(genus_.begin(), genus_.end(), 0); }
+
+void SurfaceDomain::set_features(SurfaceFeatures features) {
+  const std::size_t n = vertices_.size();
+  std::vector<char> corner(n, 0);
+  for (const std::size_t v : features.corners) {
+    if (v >= n) throw InvalidInput("feature corner " + std::to_string(v) + " names a missing vertex");
+    corner[v] = 1;
+  }
+  for (std::size_t c = 0; c < features.curves.size(); ++c) {
+    const SurfaceCurve& curve = features.curves[c];
+    const auto bad = [&](const std::string& why) {
+      throw InvalidInput("feature curve " + std::to_string(c) + " " + why + "; chain the feature edges again");
+    };
+    const std::vector<std::size_t>& v = curve.vertices;
+    if (v.size() < 2) bad("has fewer than two vertices");
+    for (std::size_t k = 0; k < v.size(); ++k) {
+      if (v[k] >= n) bad("names a missing vertex " + std::to_string(v[k]));
+      if (k + 1 == v.size() && !curve.closed) break;
+      const std::size_t w = v[(k + 1) % v.size()];
+      if (!std::binary_search(features.edges.begin(), features.edges.end(), MeshEdge{std::min(v[k], w), std::max(v[k], w)}))
+        bad("steps from vertex " + std::to_string(v[k]) + " to " + std::to_string(w) + " along no feature edge");
+    }
+    if (!curve.closed && !(corner[v.front()] && corner[v.back()])) bad("is open but does not end at corners");
+  }
+  // The boundary loops, cut at the corners on them.
+  curves_.clear();
+  for (const auto& loop : loops_) {
+    const auto first = std::find_if(loop.begin(), loop.end(), [&](std::size_t v) { return corner[v] != 0; });
+    if (first == loop.end()) {
+      curves_.push_back({loop, true});
+      continue;
+    }
+    std::vector<std::size_t> turned(first, loop.end());
+    turned.insert(turned.end(), loop.begin(), first);
+    turned.push_back(turned.front());
+    SurfaceCurve piece;
+    for (const std::size_t v : turned) {
+      piece.vertices.push_back(v);
+      if (corner[v] && piece.vertices.size() > 1) {
+        curves_.push_back(piece);
+        piece.vertices = {v};
+      }
+    }
+  }
+  curves_.insert(curves_.end(), features.curves.begin(), features.curves.end());
+  features_ = std::move(features);
+}
 
 namespace {
 

@@ -67,7 +67,7 @@ SurfaceFeatures chain(const SurfaceDomain& d, std::vector<MeshEdge> edges, const
   std::vector<char> used(f.edges.size(), 0);
   // Walks from v along edge e until a corner, or back to the start of a loop.
   const auto walk = [&](std::size_t v, std::size_t e) {
-    FeatureCurve c;
+    SurfaceCurve c;
     const std::size_t start = v;
     c.vertices.push_back(v);
     for (;;) {

@@ -20,7 +20,7 @@ namespace {
 
 // Relative tolerances of a point read back: its distance to the surface, its radius
 // against the sizing's, and (tighter: they are placed there exactly) a boundary disk's
-// distance to its boundary edge.
+// distance to its fixed curve.
 constexpr double kOnSurface = 1e-6, kRadiusMatch = 1e-6, kOnBoundary = 1e-9;
 
 std::uint64_t edge_key(std::size_t a, std::size_t b) {
@@ -48,10 +48,11 @@ void read_surface_csv(const std::string& path, SurfacePacking& packing) {
   }
   const SurfaceDomain& domain = packing.domain();
   const SurfaceIndex& index = packing.index();
-  std::unordered_set<std::uint64_t> boundary;
-  for (const auto& loop : domain.boundary_loops()) {
-    for (std::size_t k = 0; k < loop.size(); ++k)
-      boundary.insert(edge_key(loop[k], loop[(k + 1) % loop.size()]));
+  std::unordered_set<std::uint64_t> curve_edges;
+  for (const SurfaceCurve& curve : domain.fixed_curves()) {
+    const auto& v = curve.vertices;
+    for (std::size_t k = 0; k + 1 < v.size() + (curve.closed ? 1 : 0); ++k)
+      curve_edges.insert(edge_key(v[k], v[(k + 1) % v.size()]));
   }
   const bool has_r = rows.columns == 4;
   // Triangles are searched within the largest radius: farther points are refused anyway.
@@ -95,14 +96,15 @@ void read_surface_csv(const std::string& path, SurfacePacking& packing) {
             << "; give the sizing the samples were made with";
       throw InvalidInput(where.str(), InvalidInput::Remedy::sizing);
     }
-    // A disk on an open boundary edge is a boundary disk: fixed, as sampling made it.
+    // A disk on an edge of a fixed curve (open boundary, feature) is fixed, as sampling
+    // made it.
     std::uint8_t flags = 0;
-    if (!boundary.empty()) {
+    if (!curve_edges.empty()) {
       for (const std::uint32_t t : near) {
         const auto& tri = domain.triangles()[t];
         for (int e = 0; e < 3 && !flags; ++e) {
           const std::size_t a = tri[e], b = tri[(e + 1) % 3];
-          if (boundary.count(edge_key(a, b)) &&
+          if (curve_edges.count(edge_key(a, b)) &&
               distance_to_segment(p, domain.vertices()[a], domain.vertices()[b]) <= kOnBoundary * r) {
             flags = kFixed;
           }

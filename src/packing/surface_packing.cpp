@@ -71,22 +71,23 @@ SurfaceIndex::SurfaceIndex(std::shared_ptr<const SurfaceDomain> domain, double c
     keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
     for (const std::uint64_t k : keys) grid_.insert_in_cell(static_cast<std::uint32_t>(t), k);
   }
-  // The one triangle at each boundary edge, by the edge's vertex pair.
+  // A triangle at each edge of each fixed curve, by the edge's vertex pair.
   std::unordered_map<std::uint64_t, std::uint32_t> by_edge;
   auto edge_key = [](std::uint64_t a, std::uint64_t b) { return a < b ? a << 32 | b : b << 32 | a; };
   for (std::size_t t = 0; t < tris.size(); ++t)
     for (int k = 0; k < 3; ++k) by_edge[edge_key(tris[t][k], tris[t][(k + 1) % 3])] = static_cast<std::uint32_t>(t);
-  for (const auto& loop : domain_->boundary_loops()) {
-    boundary_triangle_.emplace_back();
-    for (std::size_t k = 0; k < loop.size(); ++k)
-      boundary_triangle_.back().push_back(by_edge.at(edge_key(loop[k], loop[(k + 1) % loop.size()])));
+  for (const SurfaceCurve& curve : domain_->fixed_curves()) {
+    const auto& v = curve.vertices;
+    curve_triangle_.emplace_back();
+    for (std::size_t k = 0; k + 1 < v.size() + (curve.closed ? 1 : 0); ++k)
+      curve_triangle_.back().push_back(by_edge.at(edge_key(v[k], v[(k + 1) % v.size()])));
   }
 }
 
-SurfacePoint SurfaceIndex::on_boundary(std::size_t l, std::size_t k, double s) const {
-  const auto& loop = domain_->boundary_loops()[l];
-  const Vec3 a = domain_->vertices()[loop[k]], b = domain_->vertices()[loop[(k + 1) % loop.size()]];
-  return {a + (b - a) * s, boundary_triangle_[l][k]};
+SurfacePoint SurfaceIndex::on_curve(std::size_t c, std::size_t k, double s) const {
+  const auto& v = domain_->fixed_curves()[c].vertices;
+  const Vec3 a = domain_->vertices()[v[k]], b = domain_->vertices()[v[(k + 1) % v.size()]];
+  return {a + (b - a) * s, curve_triangle_[c][k]};
 }
 
 void SurfaceIndex::triangles_near(Vec3 q, double R, std::vector<std::uint32_t>& out) const {

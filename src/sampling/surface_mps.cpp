@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Maximal Poisson-disk sampling on a surface, unbiased as Ebeida et al.'s sampler of the
-// box is: the open boundary curves first (1D darts into the uncovered parts of the
-// boundary edges, as fixed disks), then darts by area over the surface and over ever
+// box is: fixed disks first (on the feature corners, evenly along the feature curves,
+// then by 1D darts into what is left uncovered of the fixed curves), then darts by area over the surface and over ever
 // smaller cells around the uncovered part, then each remaining void gets a disk at a
 // uniform point of it (never at its vertices, which would bias the spacing).
 #include <algorithm>
@@ -56,34 +56,91 @@ class LengthTree {
   }
 };
 
-void sample_boundary(SurfacePacking& packing, Rng& rng) {
+// A fixed disk on each feature corner that no earlier one covers (two corners closer
+// than r share one disk), in vertex order.
+void sample_corners(SurfacePacking& packing) {
   const SurfaceDomain& d = packing.domain();
-  if (d.is_closed()) return;
+  if (d.features().corners.empty()) return;
+  std::vector<std::uint32_t> triangle_at(d.vertices().size());
+  for (std::size_t t = 0; t < d.triangles().size(); ++t)
+    for (const std::size_t v : d.triangles()[t]) triangle_at[v] = static_cast<std::uint32_t>(t);
+  for (const std::size_t v : d.features().corners)
+    if (!packing.covered(d.vertices()[v])) packing.insert({d.vertices()[v], triangle_at[v]}, kFixed);
+}
+
+// Each feature curve's disks evenly in ds / r(s), at most kFeatureSpacing r apart:
+// between its corner disks, or around a closed curve from a random point. A curve where
+// that does not fit (a placed disk would conflict: a short curve, or another curve close
+// by) keeps none of them; the 1D darts then cover it.
+void lay_out_features(SurfacePacking& packing, Rng& rng) {
+  const SurfaceDomain& d = packing.domain();
+  const std::size_t first = d.fixed_curves().size() - d.features().curves.size();
+  std::vector<double> measure;  // the integral of ds / r(s) from the curve's start to each vertex
+  std::vector<DiskId> placed;
+  for (std::size_t c = first; c < d.fixed_curves().size(); ++c) {
+    const SurfaceCurve& curve = d.fixed_curves()[c];
+    const std::size_t edges = curve.vertices.size() - (curve.closed ? 0 : 1);
+    const auto point = [&](std::size_t e, double t) { return packing.index().on_curve(c, e, t); };
+    // The measure by the midpoint rule, eight pieces an edge.
+    measure.assign(1, 0);
+    for (std::size_t e = 0; e < edges; ++e) {
+      const double len = norm(point(e, 1).p - point(e, 0).p);
+      double m = 0;
+      for (int k = 0; k < 8; ++k) m += len / 8 / packing.radius_at(point(e, (k + 0.5) / 8));
+      measure.push_back(measure.back() + m);
+    }
+    // The fewest steps no wider than kFeatureSpacing r first; one fewer where the chord
+    // of a step across a bend came out shorter than r, while still below sqrt(2) r.
+    const double total = measure.back();
+    const double phase = curve.closed ? uniform01(rng) : 0;
+    for (auto steps = static_cast<std::size_t>(std::ceil(total / kFeatureSpacing));
+         steps >= 2 && total / static_cast<double>(steps) < std::sqrt(2.0) * (1 - 1e-3); --steps) {
+      placed.clear();
+      bool fits = true;
+      for (std::size_t i = curve.closed ? 0 : 1; i < steps && fits; ++i) {
+        const double m = std::fmod(total * (static_cast<double>(i) + phase) / static_cast<double>(steps), total);
+        const std::size_t e = std::min<std::size_t>(
+            std::upper_bound(measure.begin(), measure.end(), m) - measure.begin() - 1, edges - 1);
+        const double span = measure[e + 1] - measure[e];
+        const SurfacePoint q = point(e, span > 0 ? std::clamp((m - measure[e]) / span, 0.0, 1.0) : 0);
+        fits = !packing.covered(q.p);
+        if (fits) placed.push_back(packing.insert(q, kFixed));
+      }
+      if (fits) break;
+      for (const DiskId id : placed) packing.remove(id);
+    }
+  }
+}
+
+// 1D darts into the uncovered parts of the fixed curves' edges, as fixed disks.
+void sample_curves(SurfacePacking& packing, Rng& rng) {
+  const SurfaceDomain& d = packing.domain();
   struct Edge {
-    std::size_t loop, edge;
+    std::size_t curve, edge;
     Vec3 a, b;
     std::map<double, std::uint32_t> gaps;  // its live gaps by their start
   };
   std::vector<Edge> edges;
-  std::vector<BoundaryGap> gaps;
+  std::vector<CurveGap> gaps;
   LengthTree lengths;
   const auto add_gap = [&](std::size_t e, double t0, double t1) {
     edges[e].gaps.emplace(t0, static_cast<std::uint32_t>(gaps.size()));
-    gaps.push_back({edges[e].loop, edges[e].edge, t0, t1});
+    gaps.push_back({edges[e].curve, edges[e].edge, t0, t1});
     lengths.push((t1 - t0) * norm(edges[e].b - edges[e].a));
   };
   // The edges in pieces of at most r_max in a grid, to find those a new disk reaches.
   const double r_max = packing.max_radius();
   SpaceGrid near_edges(2 * r_max);
-  std::vector<BoundaryGap> found;
-  for (std::size_t l = 0; l < d.boundary_loops().size(); ++l) {
-    const auto& loop = d.boundary_loops()[l];
-    for (std::size_t k = 0; k < loop.size(); ++k) {
+  std::vector<CurveGap> found;
+  for (std::size_t c = 0; c < d.fixed_curves().size(); ++c) {
+    const SurfaceCurve& curve = d.fixed_curves()[c];
+    const auto& v = curve.vertices;
+    for (std::size_t k = 0; k + 1 < v.size() + (curve.closed ? 1 : 0); ++k) {
       const std::size_t e = edges.size();
-      edges.push_back({l, k, d.vertices()[loop[k]], d.vertices()[loop[(k + 1) % loop.size()]], {}});
+      edges.push_back({c, k, d.vertices()[v[k]], d.vertices()[v[(k + 1) % v.size()]], {}});
       found.clear();
-      uncovered_on_boundary_edge(packing, l, k, true, found);
-      for (const BoundaryGap& g : found) add_gap(e, g.t0, g.t1);
+      uncovered_on_curve_edge(packing, c, k, true, found);
+      for (const CurveGap& g : found) add_gap(e, g.t0, g.t1);
       const Vec3 a = edges[e].a, ab = edges[e].b - a;
       const int pieces = std::max(1, static_cast<int>(std::ceil(norm(ab) / r_max)));
       for (int p = 0; p < pieces; ++p) near_edges.insert(static_cast<std::uint32_t>(e), a + ab * ((p + 0.5) / pieces));
@@ -109,9 +166,9 @@ void sample_boundary(SurfacePacking& packing, Rng& rng) {
       }
       if (k == gaps.size()) k = last_live;
     }
-    const BoundaryGap g = gaps[k];
+    const CurveGap g = gaps[k];
     const DiskId id =
-        packing.insert(packing.index().on_boundary(g.loop, g.edge, g.t0 + (g.t1 - g.t0) * uniform01(rng)), kFixed);
+        packing.insert(packing.index().on_curve(g.curve, g.edge, g.t0 + (g.t1 - g.t0) * uniform01(rng)), kFixed);
     // The new disk covers one interval of each edge it reaches: cut it out of the gaps
     // there.
     const Vec3 c = packing.center(id);
@@ -131,7 +188,7 @@ void sample_boundary(SurfacePacking& packing, Rng& rng) {
       for (; it != mine.end() && it->first < (*in)[1]; ++it)
         if (gaps[it->second].t1 > (*in)[0]) hit.push_back(it->second);
       for (const std::uint32_t h : hit) {
-        const BoundaryGap old = gaps[h];
+        const CurveGap old = gaps[h];
         mine.erase(old.t0);
         lengths.clear_weight(h);
         --live;
@@ -328,7 +385,9 @@ void fill_sliver(SurfacePacking& packing, const Cells& cells, const Cell& c, Rng
 
 SurfacePacking sample_mps(std::shared_ptr<const SurfaceDomain> domain, const SurfaceSizing& sizing, Rng& rng) {
   SurfacePacking packing(std::move(domain), sizing);
-  sample_boundary(packing, rng);
+  sample_corners(packing);
+  lay_out_features(packing, rng);
+  sample_curves(packing, rng);
   // Darts by area over the whole surface, as many as the count at area fraction 1 (an
   // MPS reaches about half of it); then cells small enough that a disk centered in one
   // covers it, split level by level around what is left.

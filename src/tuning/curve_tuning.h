@@ -148,13 +148,17 @@ class CurveTuner {
     return net;
   }
 
-  /// Every curve toward its target at `factor`, then its gaps evened out.
+  /// Curve c toward its target at `factor`, then its gaps evened out.
+  long tune_one(std::size_t c, double factor, Rng& rng) {
+    const long net = tune_curve(c, target(c, factor), rng);
+    even_out(c, kEvenSweeps, rng);
+    return net;
+  }
+
+  /// Every curve so.
   long tune(double factor, Rng& rng) {
     long net = 0;
-    for (std::size_t c = 0; c < curves_.size(); ++c) {
-      net += tune_curve(c, target(c, factor), rng);
-      even_out(c, kEvenSweeps, rng);
-    }
+    for (std::size_t c = 0; c < curves_.size(); ++c) net += tune_one(c, factor, rng);
     return net;
   }
 
@@ -477,6 +481,12 @@ class CurveTuner {
       }
     }
     for (const auto& [id, s] : found) disks_[c].push_back({s, id});
+    // An open curve that ends where it starts (a loop through one corner) has its corner
+    // disk at both ends.
+    if (!cv.closed && norm(cv.v.back() - cv.v.front()) <= tol_) {
+      for (const auto& [id, s] : found)
+        if (s <= tol_) disks_[c].push_back({cv.length(), id});
+    }
     sort_disks(c);
   }
   void sort_disks(std::size_t c) {

@@ -1,13 +1,20 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// 1D tuning of a surface's open boundary (paper, section 7): the surface adapter of the
-// curve tuning core (curve_tuning.h). Each boundary loop is a closed curve with no
-// pinned disk: surface sampling puts no disk on the loop's vertices, so a sharp vertex is
-// an ordinary point of the curve, and what happens across it (two stretches of the loop
-// close in space) is seen by the core's chord-distance checks.
+// 1D tuning of a surface's fixed curves (paper, section 7): the surface adapter of the
+// curve tuning core (curve_tuning.h). A boundary loop with no feature corner on it is a
+// closed curve with no pinned disk: surface sampling puts no disk on the loop's
+// vertices, so a sharp vertex is an ordinary point of the curve, and what happens across
+// it (two stretches of the loop close in space) is seen by the core's chord-distance
+// checks. Every other curve runs between two corner disks, which stay.
+//
+// Feature curves are never spaced wider than kFeatureSpacing r, below the sqrt(2) r
+// that keeps the edge between consecutive feature disks in the restricted Delaunay mesh
+// (surface_mps.cpp lays them out so).
+#include <algorithm>
 #include <limits>
 #include <vector>
 
 #include "curve_tuning.h"
+#include "disktune/surface_sampling.h"
 #include "disktune/surface_tuning.h"
 #include "surface_repair.h"
 
@@ -27,15 +34,19 @@ class SurfaceCurves {
   std::vector<detail::Curve<Vec3>> curves() const {
     const SurfaceDomain& d = packing_.domain();
     std::vector<detail::Curve<Vec3>> out;
-    for (std::size_t l = 0; l < d.boundary_loops().size(); ++l) {
+    for (std::size_t c = 0; c < d.fixed_curves().size(); ++c) {
       std::vector<Vec3> v;
-      for (const std::size_t k : d.boundary_loops()[l]) v.push_back(d.vertices()[k]);
-      out.emplace_back(std::move(v), true, l);
+      for (const std::size_t k : d.fixed_curves()[c].vertices) v.push_back(d.vertices()[k]);
+      out.emplace_back(std::move(v), d.fixed_curves()[c].closed, c);
     }
     return out;
   }
+  bool is_feature(std::size_t c) const {
+    const SurfaceDomain& d = packing_.domain();
+    return c >= d.fixed_curves().size() - d.features().curves.size();
+  }
   SurfacePoint point_at(const detail::Curve<Vec3>& c, std::size_t piece, double t) const {
-    return packing_.index().on_boundary(c.tag, piece, t);
+    return packing_.index().on_curve(c.tag, piece, t);
   }
   static Vec3 pos(const SurfacePoint& x) { return x.p; }
   double radius_at(const SurfacePoint& x) const { return packing_.radius_at(x); }
@@ -51,13 +62,17 @@ class SurfaceCurves {
   SurfacePacking& packing_;
 };
 
+void respace(SurfacePacking& packing, double spacing_factor, Rng& rng) {
+  SurfaceCurves curves(packing);
+  detail::CurveTuner<SurfaceCurves> tuner(curves);
+  for (std::size_t c = 0; c < tuner.curve_count(); ++c)
+    tuner.tune_one(c, curves.is_feature(c) ? std::min(spacing_factor, kFeatureSpacing) : spacing_factor, rng);
+}
+
 }  // namespace
 
 void respace_surface_boundary(SurfacePacking& packing, double spacing_factor, Rng& rng) {
-  if (packing.domain().is_closed()) return;  // no boundary: nothing to tune
-  SurfaceCurves curves(packing);
-  detail::CurveTuner<SurfaceCurves> tuner(curves);
-  tuner.tune(spacing_factor, rng);
+  respace(packing, spacing_factor, rng);
 }
 
 long boundary_inject(SurfacePacking& packing, Rng& rng) {

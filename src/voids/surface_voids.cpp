@@ -171,11 +171,11 @@ std::optional<SurfaceVoidPoint> first_void_point(const SurfacePacking& packing) 
 
 bool is_maximal(const SurfacePacking& packing) { return !detail::first_hole(packing); }
 
-void uncovered_on_boundary_edge(const SurfacePacking& packing, std::size_t l, std::size_t e, bool fixed_only,
-                                std::vector<BoundaryGap>& out) {
+void uncovered_on_curve_edge(const SurfacePacking& packing, std::size_t c, std::size_t e, bool fixed_only,
+                             std::vector<CurveGap>& out) {
   const auto& v = packing.domain().vertices();
-  const auto& loop = packing.domain().boundary_loops()[l];
-  const Vec3 a = v[loop[e]], b = v[loop[(e + 1) % loop.size()]], d = b - a;
+  const auto& curve = packing.domain().fixed_curves()[c].vertices;
+  const Vec3 a = v[curve[e]], b = v[curve[(e + 1) % curve.size()]], d = b - a;
   thread_local std::vector<std::array<double, 2>> covered;
   covered.clear();
   // The disks reaching the edge, piece by piece: one ball around the whole edge would
@@ -192,18 +192,20 @@ void uncovered_on_boundary_edge(const SurfacePacking& packing, std::size_t l, st
     packing.for_each_near(a + d * ((k + 0.5) / pieces), 0.5 * length / pieces + margin, add_interval);
   std::sort(covered.begin(), covered.end());
   double reach = 0;
-  for (const auto& c : covered) {
-    if (c[0] > reach) out.push_back({l, e, reach, c[0]});
-    reach = std::max(reach, c[1]);
+  for (const auto& in : covered) {
+    if (in[0] > reach) out.push_back({c, e, reach, in[0]});
+    reach = std::max(reach, in[1]);
   }
-  if (reach < 1) out.push_back({l, e, reach, 1});
+  if (reach < 1) out.push_back({c, e, reach, 1});
 }
 
-std::vector<BoundaryGap> uncovered_boundary(const SurfacePacking& packing, bool fixed_only) {
-  std::vector<BoundaryGap> gaps;
-  const auto& loops = packing.domain().boundary_loops();
-  for (std::size_t l = 0; l < loops.size(); ++l)
-    for (std::size_t e = 0; e < loops[l].size(); ++e) uncovered_on_boundary_edge(packing, l, e, fixed_only, gaps);
+std::vector<CurveGap> uncovered_curves(const SurfacePacking& packing, bool fixed_only) {
+  std::vector<CurveGap> gaps;
+  const auto& curves = packing.domain().fixed_curves();
+  for (std::size_t c = 0; c < curves.size(); ++c) {
+    const std::size_t edges = curves[c].vertices.size() - (curves[c].closed ? 0 : 1);
+    for (std::size_t e = 0; e < edges; ++e) uncovered_on_curve_edge(packing, c, e, fixed_only, gaps);
+  }
   return gaps;
 }
 

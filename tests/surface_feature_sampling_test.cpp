@@ -1,0 +1,202 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Sharp features in sampling and meshing (issue #15, item 1): the feature corners and
+// curves hold fixed disks, the curves are covered by them and spaced closely enough that
+// the restricted Delaunay mesh keeps the curves as edges. Everything is checked here
+// apart from the library: the packing by the surface oracle, the curves' coverage by
+// exact segment-ball intervals, the spacing and the mesh edges by brute force.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <set>
+#include <vector>
+
+#include "disktune/restricted_delaunay.h"
+#include "disktune/surface_features.h"
+#include "disktune/surface_sampling.h"
+#include "disktune/surface_tuning.h"
+#include "surface_checks.h"
+
+namespace disktune {
+namespace {
+
+std::shared_ptr<const SurfaceDomain> with_features(const SurfaceDomain& plain, double angle = 60) {
+  SurfaceDomain d = plain;
+  d.set_features(detect_features(d, {angle, 60}));
+  return std::make_shared<const SurfaceDomain>(std::move(d));
+}
+
+// Distance from p to the segment ab.
+double segment_distance(Vec3 p, Vec3 a, Vec3 b) {
+  const Vec3 d = b - a;
+  const double t = std::clamp(dot(p - a, d) / dot(d, d), 0.0, 1.0);
+  return norm(p - (a + d * t));
+}
+
+struct FeatureFindings {
+  std::size_t corners_without_disk = 0;  // not covered by a fixed disk either
+  std::size_t corners_by_neighbour = 0;  // covered by another corner's disk
+  std::size_t fixed_off_curves = 0;      // fixed disks on no curve edge
+  std::size_t uncovered_edges = 0;       // curve edges not covered by fixed disks
+  std::size_t pairs = 0, wide_pairs = 0; // consecutive feature disks; those > sqrt(2) r apart
+  std::vector<std::array<std::size_t, 2>> close_pairs;  // packing ids, <= sqrt(2) r apart
+};
+
+// What the feature disks of `p` look like, by brute force over all disks.
+FeatureFindings inspect(const SurfacePacking& p) {
+  const SurfaceDomain& d = p.domain();
+  const auto& v = d.vertices();
+  FeatureFindings f;
+  std::vector<DiskId> fixed;
+  for (const DiskId id : p.ids())
+    if (p.flags(id) & kFixed) fixed.push_back(id);
+  const double tol = 1e-9;
+  for (const std::size_t c : d.features().corners) {
+    bool at = false, near = false;
+    for (const DiskId id : fixed) {
+      const double dist = norm(p.center(id) - v[c]);
+      at = at || dist <= tol * p.radius(id);
+      near = near || dist <= p.radius(id) * (1 + tol);
+    }
+    f.corners_without_disk += !near;
+    f.corners_by_neighbour += near && !at;
+  }
+  // Every edge of every curve: the fixed disks on it, and its coverage by the union of
+  // the fixed disks' intervals (|a + t (b - a) - c| <= r solved for t).
+  std::vector<std::array<Vec3, 2>> edges;
+  for (const SurfaceCurve& curve : d.fixed_curves())
+    for (std::size_t k = 0; k + 1 < curve.vertices.size() + (curve.closed ? 1 : 0); ++k)
+      edges.push_back({v[curve.vertices[k]], v[curve.vertices[(k + 1) % curve.vertices.size()]]});
+  for (const DiskId id : fixed) {
+    bool on = false;
+    for (const auto& e : edges) on = on || segment_distance(p.center(id), e[0], e[1]) <= tol * p.radius(id);
+    f.fixed_off_curves += !on;
+  }
+  for (const auto& e : edges) {
+    std::vector<std::array<double, 2>> in;
+    const Vec3 dir = e[1] - e[0];
+    for (const DiskId id : fixed) {
+      const Vec3 w = e[0] - p.center(id);
+      const double A = dot(dir, dir), B = 2 * dot(dir, w), C = dot(w, w) - std::pow(p.radius(id) * (1 + tol), 2);
+      const double disc = B * B - 4 * A * C;
+      if (disc < 0) continue;
+      in.push_back({(-B - std::sqrt(disc)) / (2 * A), (-B + std::sqrt(disc)) / (2 * A)});
+    }
+    std::sort(in.begin(), in.end());
+    double reach = 0;
+    for (const auto& i : in)
+      if (i[0] <= reach) reach = std::max(reach, i[1]);
+    f.uncovered_edges += reach < 1;
+  }
+  // Consecutive feature disks: along each feature curve by arc length.
+  const std::size_t first_feature = d.fixed_curves().size() - d.features().curves.size();
+  for (std::size_t c = first_feature; c < d.fixed_curves().size(); ++c) {
+    const SurfaceCurve& curve = d.fixed_curves()[c];
+    std::vector<std::pair<double, DiskId>> along;
+    double at = 0;
+    const std::size_t n = curve.vertices.size(), steps = curve.closed ? n : n - 1;
+    for (std::size_t k = 0; k < steps; ++k) {
+      const Vec3 a = v[curve.vertices[k]], b = v[curve.vertices[(k + 1) % n]];
+      for (const DiskId id : fixed) {
+        if (segment_distance(p.center(id), a, b) > tol * p.radius(id)) continue;
+        const double s = at + norm(p.center(id) - a);
+        if (std::none_of(along.begin(), along.end(), [&](const auto& x) { return x.second == id; }))
+          along.push_back({s, id});
+      }
+      at += norm(b - a);
+    }
+    std::sort(along.begin(), along.end());
+    for (std::size_t i = 0; i + 1 < along.size() + (curve.closed && along.size() > 2 ? 1 : 0); ++i) {
+      const DiskId x = along[i].second, y = along[(i + 1) % along.size()].second;
+      const double gap = norm(p.center(x) - p.center(y));
+      ++f.pairs;
+      if (gap > std::sqrt(2.0) * std::max(p.radius(x), p.radius(y))) {
+        ++f.wide_pairs;
+      } else {
+        f.close_pairs.push_back({x, y});
+      }
+    }
+  }
+  return f;
+}
+
+// Of the close consecutive feature pairs, those that are no edge of the mesh.
+std::size_t missing_edges(const SurfacePacking& p, const FeatureFindings& f) {
+  std::vector<Vec3> samples;
+  std::vector<std::size_t> vertex_of(p.id_bound(), 0);
+  for (const DiskId id : p.ids()) vertex_of[id] = samples.size(), samples.push_back(p.center(id));
+  const SurfaceMesh mesh = restricted_delaunay(samples, p.domain());
+  std::set<std::pair<std::size_t, std::size_t>> edges;
+  for (const auto& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k) edges.insert(std::minmax(t[k], t[(k + 1) % 3]));
+  std::size_t missing = 0;
+  for (const auto& [x, y] : f.close_pairs) missing += !edges.count(std::minmax(vertex_of[x], vertex_of[y]));
+  return missing;
+}
+
+TEST(FeatureSampling, TheBoxKeepsItsTwelveEdgesOverSeeds) {
+  const auto box = with_features(*test::box_surface({1.84, 0.4, 0.2}, {4, 3, 2}));
+  ASSERT_EQ(box->features().curves.size(), 12u);
+  for (std::uint64_t seed = 1; seed <= 8; ++seed) {
+    Rng rng(seed);
+    const SurfacePacking p = sample_mps(box, SurfaceSizing::constant(0.05), rng);
+    EXPECT_SURFACE_OK(p);
+    const FeatureFindings f = inspect(p);
+    EXPECT_EQ(f.corners_without_disk + f.corners_by_neighbour, 0u) << "seed " << seed;
+    EXPECT_EQ(f.fixed_off_curves, 0u) << "seed " << seed;
+    EXPECT_EQ(f.uncovered_edges, 0u) << "seed " << seed;
+    // Every box edge is long enough to be cut into steps of r to sqrt(2) r.
+    EXPECT_EQ(f.wide_pairs, 0u) << "seed " << seed << ", of " << f.pairs;
+    EXPECT_EQ(missing_edges(p, f), 0u) << "seed " << seed;
+  }
+}
+
+TEST(FeatureSampling, FandiskFeatureDisksCoverTheCurvesAndBecomeMeshEdges) {
+  const auto fandisk = with_features(*test::surface_file("fandisk.off"));
+  for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+    Rng rng(seed);
+    const SurfacePacking p = sample_mps(fandisk, SurfaceSizing::constant(0.02), rng);
+    EXPECT_SURFACE_OK(p);
+    const FeatureFindings f = inspect(p);
+    EXPECT_EQ(f.corners_without_disk, 0u) << "seed " << seed;
+    EXPECT_EQ(f.fixed_off_curves, 0u) << "seed " << seed;
+    EXPECT_EQ(f.uncovered_edges, 0u) << "seed " << seed;
+    // Measured: 5 of about 538 pairs are wider, all on three curves too short for r
+    // (2.95 r and 3.66 r between corners: no count of steps in [r, sqrt(2) r] fits, or the
+    // next curve at an acute corner is in the way); local refinement is #15's item 3.
+    EXPECT_LE(f.wide_pairs, 6u) << "seed " << seed << ", of " << f.pairs;
+    const std::size_t missing = missing_edges(p, f);
+    EXPECT_EQ(missing, 0u) << "seed " << seed;
+    std::printf("[ features ] fandisk r 0.02 seed %llu: %zu disks, %zu corners (%zu covered by a neighbour's disk), "
+                "%zu consecutive feature pairs, %zu wider than sqrt(2) r, %zu close pairs not a mesh edge\n",
+                static_cast<unsigned long long>(seed), p.size(), fandisk->features().corners.size(),
+                f.corners_by_neighbour, f.pairs, f.wide_pairs, missing);
+  }
+}
+
+TEST(FeatureSampling, TuningKeepsTheFeatureDisksAndTheirSpacing) {
+  const auto fandisk = with_features(*test::surface_file("fandisk.off"));
+  for (const double factor : {1.3, 0.75}) {
+    Rng rng(4);
+    SurfacePacking p = sample_mps(fandisk, SurfaceSizing::constant(0.04), rng);
+    const std::size_t wide_before = inspect(p).wide_pairs;
+    const auto goal = static_cast<std::size_t>(std::lround(factor * static_cast<double>(p.size())));
+    const TuneResult result = tune(p, Target::count(goal), rng);
+    EXPECT_TRUE(result.reached) << "factor " << factor;
+    EXPECT_SURFACE_OK(p);
+    const FeatureFindings f = inspect(p);
+    EXPECT_EQ(f.corners_without_disk, 0u) << "factor " << factor;
+    EXPECT_EQ(f.fixed_off_curves, 0u) << "factor " << factor;
+    EXPECT_EQ(f.uncovered_edges, 0u) << "factor " << factor;
+    // The spacing is tuned toward the target with random 1D steps (not laid out again):
+    // a few more wide pairs than the sample had are allowed, one in a hundred.
+    EXPECT_LE(f.wide_pairs, wide_before + f.pairs / 100) << "factor " << factor;
+    EXPECT_EQ(missing_edges(p, f), 0u) << "factor " << factor;
+    std::printf("[ features ] fandisk r 0.04 tuned to %zu (%.2fx): %zu consecutive feature pairs, %zu wider than sqrt(2) r "
+                "(%zu in the sample)\n", p.size(), factor, f.pairs, f.wide_pairs, wide_before);
+  }
+}
+
+}  // namespace
+}  // namespace disktune
