@@ -68,7 +68,8 @@ checks() {
     'PlanarProperty\.(OracleAfterEveryOperation|TargetsOnBothSides)'
     'PeriodicProperty\.(OracleAfterEveryOperation|TargetsOnBothSides)'
     'ConstrainedDelaunay\.ManyPointsAndARoundHole' 'BoundaryTuning\.PlanarSteps'
-    'Remesh\.GivesExactly' 'PlanarTuning/InDomain\.TuneDownTo04')
+    'Remesh\.GivesExactly' 'PlanarTuning/InDomain\.TuneDownTo04'
+    'FeatureMeshing\.' 'FeatureSampling\.(Fandisk|Tuning)')
   local slow="^($(IFS='|'; echo "${skip[*]}"))"
   ASAN_OPTIONS=halt_on_error=1:detect_leaks=1:print_stacktrace=1 \
     UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 \

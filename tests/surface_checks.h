@@ -6,9 +6,11 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <limits>
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -58,6 +60,58 @@ inline std::shared_ptr<const SurfaceDomain> box_surface(const std::array<double,
         }
   }
   return std::make_shared<const SurfaceDomain>(std::move(vertices), std::move(triangles));
+}
+
+/// The triangles at each edge, by brute force over a map of vertex pairs.
+inline std::map<MeshEdge, std::vector<std::size_t>> edge_sides(const SurfaceDomain& d) {
+  std::map<MeshEdge, std::vector<std::size_t>> sides;
+  for (std::size_t t = 0; t < d.triangles().size(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const std::size_t a = d.triangles()[t][k], b = d.triangles()[t][(k + 1) % 3];
+      sides[{std::min(a, b), std::max(a, b)}].push_back(t);
+    }
+  return sides;
+}
+
+/// The interior edges whose triangles' normals are more than `degrees` apart, computed
+// apart from the library: normals from the right-hand rule, angle by atan2.
+inline std::set<MeshEdge> expected_features(const SurfaceDomain& d, double degrees) {
+  const auto sides = edge_sides(d);
+  const auto normal = [&](std::size_t t) {
+    const auto& v = d.vertices();
+    const auto& tri = d.triangles()[t];
+    return cross(v[tri[1]] - v[tri[0]], v[tri[2]] - v[tri[0]]);
+  };
+  std::set<MeshEdge> out;
+  for (const auto& [edge, tris] : sides) {
+    if (tris.size() != 2) continue;
+    const Vec3 m = normal(tris[0]), n = normal(tris[1]);
+    const double angle = std::atan2(norm(cross(m, n)), dot(m, n)) * 180 / 3.14159265358979323846;
+    if (angle > degrees) out.insert(edge);
+  }
+  return out;
+}
+
+/// The patches the edges in `cuts` divide the surface into, as a label per triangle
+/// (brute force: triangles joined across every other edge they share).
+inline std::vector<std::size_t> expected_patches(const SurfaceDomain& d, const std::set<MeshEdge>& cuts) {
+  const auto sides = edge_sides(d);
+  std::vector<std::size_t> label(d.triangles().size(), d.triangles().size());
+  std::vector<std::vector<std::size_t>> next(d.triangles().size());
+  for (const auto& [edge, tris] : sides)
+    if (tris.size() == 2 && !cuts.count(edge)) next[tris[0]].push_back(tris[1]), next[tris[1]].push_back(tris[0]);
+  for (std::size_t t = 0; t < label.size(); ++t) {
+    if (label[t] != label.size()) continue;
+    std::vector<std::size_t> stack{t};
+    label[t] = t;
+    while (!stack.empty()) {
+      const std::size_t u = stack.back();
+      stack.pop_back();
+      for (const std::size_t w : next[u])
+        if (label[w] == label.size()) label[w] = t, stack.push_back(w);
+    }
+  }
+  return label;
 }
 
 /// The point of the surface nearest p (brute force), as a surface point for insert().

@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Sharp features in sampling and meshing (issue #15, item 1): the feature corners and
-// curves hold fixed disks, the curves are covered by them and spaced closely enough that
-// the restricted Delaunay mesh keeps the curves as edges. Everything is checked here
-// apart from the library: the packing by the surface oracle, the curves' coverage by
-// exact segment-ball intervals, the spacing and the mesh edges by brute force.
+// Sharp features in sampling and meshing (issue #15, items 1 and 2): the feature corners
+// and curves hold fixed disks, the curves are covered by them and spaced closely enough
+// that the restricted Delaunay mesh keeps the curves as edges, and the mesh is a
+// manifold with no triangle across a feature. Everything is checked here apart from the
+// library: the packing by the surface oracle, the curves' coverage by exact segment-ball
+// intervals, the spacing, the mesh edges and the patches by brute force, the topology
+// by oracle/mesh_topology.h.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -16,6 +18,7 @@
 #include "disktune/surface_features.h"
 #include "disktune/surface_sampling.h"
 #include "disktune/surface_tuning.h"
+#include "oracle/mesh_topology.h"
 #include "surface_checks.h"
 
 namespace disktune {
@@ -123,10 +126,10 @@ FeatureFindings inspect(const SurfacePacking& p) {
 
 // Of the close consecutive feature pairs, those that are no edge of the mesh.
 std::size_t missing_edges(const SurfacePacking& p, const FeatureFindings& f) {
-  std::vector<Vec3> samples;
   std::vector<std::size_t> vertex_of(p.id_bound(), 0);
-  for (const DiskId id : p.ids()) vertex_of[id] = samples.size(), samples.push_back(p.center(id));
-  const SurfaceMesh mesh = restricted_delaunay(samples, p.domain());
+  std::size_t n = 0;
+  for (const DiskId id : p.ids()) vertex_of[id] = n++;
+  const SurfaceMesh mesh = restricted_delaunay(p);
   std::set<std::pair<std::size_t, std::size_t>> edges;
   for (const auto& t : mesh.triangles)
     for (int k = 0; k < 3; ++k) edges.insert(std::minmax(t[k], t[(k + 1) % 3]));
@@ -196,6 +199,95 @@ TEST(FeatureSampling, TuningKeepsTheFeatureDisksAndTheirSpacing) {
     std::printf("[ features ] fandisk r 0.04 tuned to %zu (%.2fx): %zu consecutive feature pairs, %zu wider than sqrt(2) r "
                 "(%zu in the sample)\n", p.size(), factor, f.pairs, f.wide_pairs, wide_before);
   }
+}
+
+// The restricted Delaunay mesh of `p` checked by the independent topology oracle, and
+// for triangles that join the two sides of a feature: two vertices that are surface
+// disks (not fixed) in different patches, the patches cut by the oracle's own dihedral
+// test at 60 degrees.
+struct MeshFindings {
+  oracle::TopologyReport topology;
+  std::size_t straddling = 0;
+};
+
+MeshFindings mesh_findings(const SurfacePacking& p) {
+  const SurfaceMesh mesh = restricted_delaunay(p);
+  std::vector<std::array<std::size_t, 3>> tris;
+  for (const auto& t : mesh.triangles) tris.push_back({t[0], t[1], t[2]});
+  MeshFindings out;
+  out.topology = oracle::check_topology(mesh.vertices.size(), tris);
+  const std::vector<std::size_t> patch = test::expected_patches(p.domain(), test::expected_features(p.domain(), 60));
+  std::vector<std::size_t> patch_of;  // per mesh vertex; none for a fixed disk
+  const std::size_t none = p.domain().triangles().size();
+  for (const DiskId id : p.ids()) patch_of.push_back((p.flags(id) & kFixed) ? none : patch[p.point(id).triangle]);
+  for (const auto& t : tris) {
+    std::set<std::size_t> seen;
+    for (const std::size_t v : t)
+      if (patch_of[v] != none) seen.insert(patch_of[v]);
+    out.straddling += seen.size() > 1;
+  }
+  return out;
+}
+
+TEST(FeatureMeshing, FandiskMeshesAreManifoldsThatFollowTheFeaturesOverSeeds) {
+  const auto fandisk = with_features(*test::surface_file("fandisk.off"));
+  for (const double r : {0.03, 0.02}) {
+    for (std::uint64_t seed = 1; seed <= 8; ++seed) {
+      Rng rng(seed);
+      const SurfacePacking p = sample_mps(fandisk, SurfaceSizing::constant(r), rng);
+      const MeshFindings m = mesh_findings(p);
+      EXPECT_TRUE(m.topology.manifold() && m.topology.genus == 0 && m.topology.boundary_edges == 0)
+          << "r " << r << " seed " << seed << ": " << m.topology.summary();
+      // Where two consecutive feature disks are too far apart for an edge between them
+      // (on curves too short for r, FeatureSampling above), the mesh bridges the gap
+      // with two triangles across it; nowhere else may one cross.
+      const std::size_t wide = inspect(p).wide_pairs;
+      EXPECT_LE(m.straddling, 2 * wide) << "r " << r << " seed " << seed;
+      std::printf("[ features ] fandisk r %.2f seed %llu: mesh %s, %zu triangles across a feature, %zu wide pairs\n", r,
+                  static_cast<unsigned long long>(seed), m.topology.summary().c_str(), m.straddling, wide);
+    }
+  }
+}
+
+// The issue's case: the elephant at r = 0.01 tuned to 1.4 times its sample (library
+// seeds 7 and 9) had edges in three triangles at its sharp creases.
+TEST(FeatureMeshing, TheElephantTunedDenseIsAManifoldAtItsCreases) {
+  const auto elephant = with_features(*test::surface_file("elephant.off"));
+  for (const std::uint64_t seed : {7, 9}) {
+    Rng rng(seed);
+    SurfacePacking p = sample_mps(elephant, SurfaceSizing::constant(0.01), rng);
+    const auto goal = static_cast<std::size_t>(std::lround(1.4 * static_cast<double>(p.size())));
+    ASSERT_TRUE(tune(p, Target::count(goal), rng).reached);
+    const MeshFindings m = mesh_findings(p);
+    EXPECT_TRUE(m.topology.manifold() && m.topology.genus == 3) << "seed " << seed << ": " << m.topology.summary();
+    EXPECT_EQ(m.straddling, 0u) << "seed " << seed;
+  }
+}
+
+TEST(TopologyOracle, TellsManifoldsFromTheRest) {
+  // A tetrahedron: closed, genus 0; without one face: one boundary loop, still genus 0.
+  std::vector<std::array<std::size_t, 3>> tet{{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}};
+  auto r = oracle::check_topology(4, tet);
+  EXPECT_TRUE(r.manifold() && r.genus == 0 && r.boundary_edges == 0 && r.components == 1) << r.summary();
+  r = oracle::check_topology(4, {tet[0], tet[1], tet[2]});
+  EXPECT_TRUE(r.manifold() && r.genus == 0 && r.boundary_loops == 1) << r.summary();
+  // A 4 x 4 torus grid: genus 1.
+  std::vector<std::array<std::size_t, 3>> torus;
+  const auto at = [](std::size_t i, std::size_t j) { return (i % 4) * 4 + j % 4; };
+  for (std::size_t i = 0; i < 4; ++i)
+    for (std::size_t j = 0; j < 4; ++j) {
+      torus.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      torus.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  r = oracle::check_topology(16, torus);
+  EXPECT_TRUE(r.manifold() && r.genus == 1) << r.summary();
+  // An edge in three triangles; two fans at one vertex; a flipped triangle.
+  EXPECT_EQ(oracle::check_topology(5, {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}}).non_manifold_edges, 1u);
+  EXPECT_EQ(oracle::check_topology(5, {{0, 1, 2}, {0, 3, 4}}).bow_tie_vertices, 1u);
+  tet[3] = {0, 2, 3};
+  r = oracle::check_topology(4, tet);
+  EXPECT_FALSE(r.manifold());
+  EXPECT_EQ(r.misoriented_edges, 3u);
 }
 
 }  // namespace

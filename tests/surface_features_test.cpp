@@ -17,30 +17,6 @@
 namespace disktune {
 namespace {
 
-// The interior edges whose triangles' normals are more than `degrees` apart, computed
-// apart from the library: normals from the right-hand rule, angle by atan2.
-std::set<MeshEdge> expected_features(const SurfaceDomain& d, double degrees) {
-  std::map<MeshEdge, std::vector<std::size_t>> sides;
-  for (std::size_t t = 0; t < d.triangles().size(); ++t)
-    for (int k = 0; k < 3; ++k) {
-      std::size_t a = d.triangles()[t][k], b = d.triangles()[t][(k + 1) % 3];
-      sides[{std::min(a, b), std::max(a, b)}].push_back(t);
-    }
-  const auto normal = [&](std::size_t t) {
-    const auto& v = d.vertices();
-    const auto& tri = d.triangles()[t];
-    return cross(v[tri[1]] - v[tri[0]], v[tri[2]] - v[tri[0]]);
-  };
-  std::set<MeshEdge> out;
-  for (const auto& [edge, tris] : sides) {
-    if (tris.size() != 2) continue;
-    const Vec3 m = normal(tris[0]), n = normal(tris[1]);
-    const double angle = std::atan2(norm(cross(m, n)), dot(m, n)) * 180 / 3.14159265358979323846;
-    if (angle > degrees) out.insert(edge);
-  }
-  return out;
-}
-
 // Every feature edge in exactly one curve, consecutive curve vertices joined by feature
 // edges, open curves from corner to corner with no corner inside, closed ones with none.
 void expect_curves_partition(const SurfaceFeatures& f) {
@@ -89,7 +65,7 @@ std::shared_ptr<const SurfaceDomain> cylinder(int n) {
 TEST(SurfaceFeatures, TheBoxHasTwelveEdgeCurvesBetweenEightCorners) {
   const auto box = test::box_surface({1.84, 0.4, 0.2}, {4, 3, 2});
   const SurfaceFeatures f = detect_features(*box);
-  const auto expected = expected_features(*box, 60);
+  const auto expected = test::expected_features(*box, 60);
   EXPECT_EQ(std::set<MeshEdge>(f.edges.begin(), f.edges.end()), expected);
   EXPECT_EQ(f.edges.size(), 4u * (4 + 3 + 2));  // each box edge split as its axis is
   EXPECT_EQ(f.corners.size(), 8u);
@@ -112,7 +88,7 @@ TEST(SurfaceFeatures, ACylinderHasTwoClosedRimsAndNoCorner) {
   // Below the seams' 22.5 degrees every side edge is a feature too, and the rims' vertices
   // (four feature edges each) are corners.
   const SurfaceFeatures all = detect_features(*cyl, {20, 60});
-  EXPECT_EQ(std::set<MeshEdge>(all.edges.begin(), all.edges.end()), expected_features(*cyl, 20));
+  EXPECT_EQ(std::set<MeshEdge>(all.edges.begin(), all.edges.end()), test::expected_features(*cyl, 20));
   EXPECT_EQ(all.corners.size(), 32u);
   expect_curves_partition(all);
   // A rim turns by 22.5 degrees at each vertex: with corners from 20 degrees, each is one.
@@ -128,7 +104,7 @@ TEST(SurfaceFeatures, RealSurfacesMatchTheIndependentCountAtSeveralAngles) {
     for (const double angle : {20.0, 45.0, 60.0, 85.0, 100.0}) {  // none at a tie (CAD parts have many 90s)
       SCOPED_TRACE(std::string(file) + " at " + std::to_string(angle));
       const SurfaceFeatures f = detect_features(*d, {angle, 60});
-      EXPECT_EQ(std::set<MeshEdge>(f.edges.begin(), f.edges.end()), expected_features(*d, angle));
+      EXPECT_EQ(std::set<MeshEdge>(f.edges.begin(), f.edges.end()), test::expected_features(*d, angle));
       expect_curves_partition(f);
     }
   }

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "disktune/surface_domain.h"
+#include "disktune/surface_packing.h"
 #include "disktune/surface_mesh.h"
 #include "disktune/vec3.h"
 
@@ -24,6 +25,25 @@ namespace disktune {
 /// make flat slivers, and those cost time (measured: 0.03 s for 257 samples and about
 /// 4 s for 6500 on the 320-face data/surfaces/sphere.off).
 SurfaceMesh restricted_delaunay(const std::vector<Vec3>& samples, const SurfaceDomain& surface);
+
+/// A sample on a feature curve or an open boundary: it belongs to every patch there.
+constexpr std::uint32_t kAnyPatch = ~std::uint32_t{0};
+
+/// The same on a surface with sharp features, each sample's patch given
+/// (SurfaceDomain::triangle_patch, or kAnyPatch): a triangle whose vertices lie in two
+/// different patches, joining the two sides of a feature, is dropped where it shares an
+/// edge with two or more others (near a sharp crease such triangles close a tetrahedron
+/// over it; where feature disks are too far apart for an edge between them, the mesh
+/// needs them and they stay).
+/// Throws as above, and InvalidInput unless there is one patch per sample, each a patch
+/// of the surface or kAnyPatch.
+SurfaceMesh restricted_delaunay(const std::vector<Vec3>& samples, const SurfaceDomain& surface,
+                                const std::vector<std::uint32_t>& sample_patch);
+
+/// The mesh of a packing: vertex i is the i-th live disk (packing.ids() order); a fixed
+/// disk (on a feature curve or the open boundary) belongs to every patch, any other to
+/// the patch of the triangle it lies in.
+SurfaceMesh restricted_delaunay(const SurfacePacking& packing);
 
 /// The symmetric Hausdorff distance between the mesh's triangles and the surface,
 /// approximated from below: `samples_per_mesh` area-weighted random points on each (and

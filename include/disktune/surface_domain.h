@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -71,6 +72,11 @@ class SurfaceDomain {
   /// into open curves at the feature corners on it (a loop with none stays closed), then
   /// every feature curve. Corners (features().corners) are the ends of the open ones.
   const std::vector<SurfaceCurve>& fixed_curves() const { return curves_; }
+  /// The patches the feature curves cut the surface into: triangles joined across every
+  /// edge that is no feature edge, numbered from 0 by their lowest triangle. Without
+  /// features, the connected components.
+  const std::vector<std::uint32_t>& triangle_patch() const { return patch_; }
+  std::size_t patch_count() const { return patch_count_; }
 
   Vec3 bbox_min() const { return lo_; }
   Vec3 bbox_max() const { return hi_; }
@@ -83,6 +89,8 @@ class SurfaceDomain {
   std::vector<std::vector<std::size_t>> loops_;
   SurfaceFeatures features_;
   std::vector<SurfaceCurve> curves_;
+  std::vector<std::uint32_t> patch_;
+  std::size_t patch_count_ = 0;
   std::vector<std::size_t> component_;
   std::vector<int> genus_;
   Vec3 lo_, hi_;

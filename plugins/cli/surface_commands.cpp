@@ -62,12 +62,8 @@ struct SampleMesh {
 
 SampleMesh sample_mesh(const SurfacePacking& packing) {
   SampleMesh out;
-  std::vector<Vec3> samples;
-  for (const DiskId id : packing.ids()) {
-    samples.push_back(packing.center(id));
-    out.radius.push_back(packing.radius(id));
-  }
-  out.mesh = restricted_delaunay(samples, packing.domain());
+  for (const DiskId id : packing.ids()) out.radius.push_back(packing.radius(id));
+  out.mesh = restricted_delaunay(packing);
   out.check = check_surface_mesh(out.mesh);
   return out;
 }

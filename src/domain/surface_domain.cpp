@@ -219,6 +219,22 @@ void SurfaceDomain::set_features(SurfaceFeatures features) {
     }
   }
   curves_.insert(curves_.end(), features.curves.begin(), features.curves.end());
+  // Patches: triangles joined across the edges that are no feature edge.
+  UnionFind uf(triangles_.size());
+  const std::vector<HalfEdge> half = sorted_half_edges(triangles_);
+  for_each_edge(half, [&](std::size_t first, std::size_t last) {
+    if (last - first == 2 &&
+        !std::binary_search(features.edges.begin(), features.edges.end(), MeshEdge{half[first].lo, half[first].hi}))
+      uf.unite(half[first].tri, half[first + 1].tri);
+  });
+  std::vector<std::uint32_t> of_root(triangles_.size(), ~0u);
+  patch_.resize(triangles_.size());
+  patch_count_ = 0;
+  for (std::size_t t = 0; t < triangles_.size(); ++t) {
+    std::uint32_t& p = of_root[uf.find(t)];
+    if (p == ~0u) p = static_cast<std::uint32_t>(patch_count_++);
+    patch_[t] = p;
+  }
   features_ = std::move(features);
 }
 

@@ -122,10 +122,66 @@ double farthest(const std::vector<Point>& points, const Tree& tree) {
   return std::sqrt(d2);
 }
 
+/// Removes the triangles that join two sides of a feature (vertices in two different
+/// patches) and share an edge with two or more other triangles. Near a sharp crease a
+/// dual edge can cross it, so the triangles on either side close a tetrahedron over the
+/// crease: its faces across it are the extra ones. Elsewhere such a triangle stays: where
+/// feature disks are too far apart to have an edge between them, the mesh needs it.
+void drop_crossings(SurfaceMesh& mesh, const std::vector<std::uint32_t>& sample_patch) {
+  const auto crosses = [&](const std::array<std::uint32_t, 3>& t) {
+    std::uint32_t side = kAnyPatch;
+    for (const std::uint32_t v : t) {
+      if (sample_patch[v] == kAnyPatch) continue;
+      if (side != kAnyPatch && sample_patch[v] != side) return true;
+      side = sample_patch[v];
+    }
+    return false;
+  };
+  const auto key = [](std::uint32_t a, std::uint32_t b) {
+    return a < b ? std::uint64_t{a} << 32 | b : std::uint64_t{b} << 32 | a;
+  };
+  std::map<std::uint64_t, int> uses;
+  for (const auto& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k) ++uses[key(t[k], t[(k + 1) % 3])];
+  const auto extra = [&](const std::array<std::uint32_t, 3>& t) {
+    if (!crosses(t)) return false;
+    for (int k = 0; k < 3; ++k)
+      if (uses[key(t[k], t[(k + 1) % 3])] > 2) return true;
+    return false;
+  };
+  mesh.triangles.erase(std::remove_if(mesh.triangles.begin(), mesh.triangles.end(), extra), mesh.triangles.end());
+}
+
 }  // namespace
 
 SurfaceMesh restricted_delaunay(const std::vector<Vec3>& samples, const SurfaceDomain& surface) {
+  return restricted_delaunay(samples, surface, std::vector<std::uint32_t>(samples.size(), kAnyPatch));
+}
+
+SurfaceMesh restricted_delaunay(const SurfacePacking& packing) {
+  std::vector<Vec3> samples;
+  std::vector<std::uint32_t> patch;
+  for (const DiskId id : packing.ids()) {
+    samples.push_back(packing.center(id));
+    patch.push_back((packing.flags(id) & kFixed) ? kAnyPatch
+                                                 : packing.domain().triangle_patch()[packing.point(id).triangle]);
+  }
+  return restricted_delaunay(samples, packing.domain(), patch);
+}
+
+SurfaceMesh restricted_delaunay(const std::vector<Vec3>& samples, const SurfaceDomain& surface,
+                                const std::vector<std::uint32_t>& sample_patch) {
   check_samples(samples);
+  if (sample_patch.size() != samples.size()) {
+    throw InvalidInput("restricted_delaunay: " + std::to_string(sample_patch.size()) + " patches for " +
+                       std::to_string(samples.size()) + " samples; give one per sample");
+  }
+  for (const std::uint32_t p : sample_patch) {
+    if (p != kAnyPatch && p >= surface.patch_count()) {
+      throw InvalidInput("restricted_delaunay: patch " + std::to_string(p) + " of a sample, but the surface has " +
+                         std::to_string(surface.patch_count()) + "; give SurfaceDomain::triangle_patch values");
+    }
+  }
   const auto distinct = distinct_samples(samples);
   Delaunay dt(distinct.begin(), distinct.end());
   if (dt.dimension() < 2) {
@@ -146,11 +202,11 @@ SurfaceMesh restricted_delaunay(const std::vector<Vec3>& samples, const SurfaceD
   // Keeps the facet if `dual` meets the surface, facing the way of the hit surface
   // triangle nearest to it (a long dual edge may cross the surface more than once).
   const auto keep_if_hit = [&](const Delaunay::Facet& f, const auto& dual) {
+    std::array<std::uint32_t, 3> t;
+    for (int k = 0; k < 3; ++k) t[k] = f.first->vertex((f.second + 1 + k) & 3)->info();
     hits.clear();
     tree.all_intersected_primitives(dual, std::back_inserter(hits));
     if (hits.empty()) return;
-    std::array<std::uint32_t, 3> t;
-    for (int k = 0; k < 3; ++k) t[k] = f.first->vertex((f.second + 1 + k) & 3)->info();
     const Point centroid = point((samples[t[0]] + samples[t[1]] + samples[t[2]]) * (1.0 / 3));
     const auto distance2 = [&](ExactTriangles::const_iterator h) {
       const auto& tri = surface.triangles()[static_cast<std::size_t>(h - input.begin())];
@@ -203,6 +259,7 @@ SurfaceMesh restricted_delaunay(const std::vector<Vec3>& samples, const SurfaceD
       keep_if_hit(*f, Exact::Ray_3(center.at(c), out));
     }
   }
+  drop_crossings(mesh, sample_patch);
   // Deterministic order whatever CGAL's internal one: by the triangles' vertex indices.
   std::sort(mesh.triangles.begin(), mesh.triangles.end());
   return mesh;

@@ -34,10 +34,7 @@ RemeshResult remesh(std::shared_ptr<const SurfaceDomain> surface, std::size_t ve
   SurfacePacking packing = sample_mps(surface, sizing, rng);
   out.tuning = tune(packing, Target::count(vertex_count), rng, options.tune);
 
-  std::vector<Vec3> samples;
-  samples.reserve(packing.size());
-  for (const DiskId id : packing.ids()) samples.push_back(packing.center(id));
-  out.mesh = restricted_delaunay(samples, *surface);
+  out.mesh = restricted_delaunay(packing);
   out.check = check_surface_mesh(out.mesh);
   return out;
 }
