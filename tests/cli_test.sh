@@ -275,6 +275,8 @@ expect surface-curvature-tune 0 "reached" -- "$bin" tune --domain "$eight" --siz
 fandisk="$data/surfaces/fandisk.off"
 expect features-default 0 "^sample: [0-9]+ disks \([1-9][0-9]* on feature curves\), .*closed, 35 feature curves and 25 corners" -- "$bin" sample --domain "$fandisk" --radius 0.02 --output fd.csv
 expect features-read 0 "^report: [0-9]+ disks \([1-9][0-9]* on feature curves\), .*maximal, conflict-free; mesh: .*manifold yes, genus 0" -- "$bin" report fd.csv --domain "$fandisk" --radius 0.02
+expect features-mesh 0 "^mesh: [0-9]+ disks, .* triangles \(restricted Delaunay\), [1-9][0-9]* edges along feature curves, manifold yes, genus 0" -- "$bin" mesh fd.csv --domain "$fandisk" --radius 0.02 --output fd.obj
+grep -q "^l [0-9]* [0-9]*$" fd.obj && pass=$((pass + 1)) || { echo "FAIL feature edges as OBJ lines"; fails=$((fails + 1)); }
 expect features-none 0 "^sample: [0-9]+ disks, eta .*genus 0, closed, area" -- "$bin" sample --domain "$fandisk" --radius 0.02 --features none
 expect features-angle 0 "closed, [0-9]+ feature curves" -- "$bin" sample --domain "$fandisk" --radius 0.02 --features 30
 expect features-bad 2 "--features 200: give a dihedral angle in degrees strictly between 0 and 180" -- "$bin" sample --domain "$fandisk" --radius 0.02 --features 200

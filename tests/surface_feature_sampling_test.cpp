@@ -152,6 +152,8 @@ TEST(FeatureSampling, TheBoxKeepsItsTwelveEdgesOverSeeds) {
     // Every box edge is long enough to be cut into steps of r to sqrt(2) r.
     EXPECT_EQ(f.wide_pairs, 0u) << "seed " << seed << ", of " << f.pairs;
     EXPECT_EQ(missing_edges(p, f), 0u) << "seed " << seed;
+    // The mesh names those edges as its feature edges (what OBJ and VTK files show).
+    EXPECT_EQ(restricted_delaunay(p).feature_edges.size(), f.pairs) << "seed " << seed;
   }
 }
 

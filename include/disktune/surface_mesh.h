@@ -16,6 +16,9 @@ namespace disktune {
 struct SurfaceMesh {
   std::vector<Vec3> vertices;
   std::vector<std::array<std::uint32_t, 3>> triangles;  // indices into `vertices`
+  /// The mesh edges that follow the input's sharp feature curves (each joins two fixed
+  /// disks consecutive along one); written as lines in OBJ and VTK files.
+  std::vector<std::array<std::uint32_t, 2>> feature_edges = {};
 };
 
 /// What check_surface_mesh finds. Boundary edges are no problem by themselves (the
@@ -40,7 +43,9 @@ SurfaceMeshCheck check_surface_mesh(const SurfaceMesh& mesh);
 
 /// Writes the mesh as ASCII OFF, OBJ, PLY or legacy VTK, chosen by the extension of
 /// `path` (any letter case; mesh_io.h writes every mesh kind alike), every coordinate in the shortest form that reads back to the same double
-/// (at most 17 significant digits), through write_file_atomically. Throws InvalidInput,
+/// (at most 17 significant digits), through write_file_atomically; the feature edges as
+/// line elements in OBJ ('l') and VTK (LINES), so a viewer shows the curves (OFF and PLY
+/// hold the triangles only). Throws InvalidInput,
 /// naming the allowed extensions, for any other extension, and IoError when the file
 /// cannot be written.
 void write_surface_mesh(const std::string& path, const SurfaceMesh& mesh);

@@ -170,9 +170,12 @@ int run_surface_mesh(const std::string& input, const DomainArgs& domain_args,
   const SampleMesh m = sample_mesh(packing);
   const double seconds = seconds_since(t0);
   write_surface_mesh(output, m.mesh);
+  const std::string along = domain.surface->features().curves.empty()
+                                ? ""
+                                : ", " + std::to_string(m.mesh.feature_edges.size()) + " edges along feature curves";
   std::printf(
-      "mesh: %zu disks, %zu vertices, %zu triangles (restricted Delaunay), %s, %.3f s -> %s\n",
-      packing.size(), m.mesh.vertices.size(), m.mesh.triangles.size(),
+      "mesh: %zu disks, %zu vertices, %zu triangles (restricted Delaunay)%s, %s, %.3f s -> %s\n",
+      packing.size(), m.mesh.vertices.size(), m.mesh.triangles.size(), along.c_str(),
       topology_text(m.check, *domain.surface).c_str(), seconds, output.c_str());
   if (!m.check.problems.empty()) std::printf("mesh: %s\n", m.check.problems.c_str());
   warn_topology(m.check, *domain.surface, "written");

@@ -24,6 +24,7 @@ struct MeshView {
   const std::vector<DiskId>* vertex_disk;
   const std::vector<std::array<std::uint32_t, 3>>& triangles;
   std::string title;
+  const std::vector<std::array<std::uint32_t, 2>>* lines = nullptr;  // OBJ and VTK only
 };
 
 std::vector<Vec3> in_plane(const std::vector<Vec2>& points) {
@@ -62,7 +63,12 @@ void write_view(const std::string& path, const MeshView& mesh) {
       case MeshFormat::Obj:
         out << "# " << mesh.title << ", " << nt << " triangles\n";
         put_vertices(out, mesh, "v ");
-        return put_triangles(out, mesh, "f ", 1);
+        put_triangles(out, mesh, "f ", 1);
+        if (mesh.lines && !mesh.lines->empty()) {
+          out << "# feature edges\n";
+          for (const auto& l : *mesh.lines) out << "l " << l[0] + 1 << ' ' << l[1] + 1 << '\n';
+        }
+        return;
       case MeshFormat::Ply:
         out << "ply\nformat ascii 1.0\ncomment " << mesh.title << "\nelement vertex " << nv
             << "\nproperty double x\nproperty double y\nproperty double z\nelement face " << nt
@@ -74,6 +80,10 @@ void write_view(const std::string& path, const MeshView& mesh) {
         put_vertices(out, mesh, "");
         out << "POLYGONS " << nt << ' ' << 4 * nt << '\n';
         put_triangles(out, mesh, "3 ", 0);
+        if (mesh.lines && !mesh.lines->empty()) {
+          out << "LINES " << mesh.lines->size() << ' ' << 3 * mesh.lines->size() << '\n';
+          for (const auto& l : *mesh.lines) out << "2 " << l[0] << ' ' << l[1] << '\n';
+        }
         if (!mesh.vertex_disk) return;
         out << "POINT_DATA " << nv << "\nSCALARS disk_id unsigned_int 1\nLOOKUP_TABLE default\n";
         for (const DiskId id : *mesh.vertex_disk) out << id << '\n';
@@ -106,7 +116,8 @@ void write_mesh(const std::string& path, const PlanarMesh& mesh) {
 
 void write_surface_mesh(const std::string& path, const SurfaceMesh& mesh) {
   write_view(path, {mesh.vertices, nullptr, mesh.triangles,
-                    "disktune surface mesh: " + std::to_string(mesh.vertices.size()) + " vertices"});
+                    "disktune surface mesh: " + std::to_string(mesh.vertices.size()) + " vertices",
+                    &mesh.feature_edges});
 }
 
 void check_surface_mesh_path(const std::string& path) { mesh_format_for_path(path); }

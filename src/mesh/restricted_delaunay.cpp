@@ -19,11 +19,13 @@
 #include <iterator>
 #include <map>
 #include <numeric>
+#include <set>
 #include <utility>
 
 #include "disktune/errors.h"
 #include "disktune/random.h"
 #include "disktune/restricted_delaunay.h"
+#include "feature_chain.h"
 
 namespace disktune {
 namespace {
@@ -166,7 +168,14 @@ SurfaceMesh restricted_delaunay(const SurfacePacking& packing) {
     patch.push_back((packing.flags(id) & kFixed) ? kAnyPatch
                                                  : packing.domain().triangle_patch()[packing.point(id).triangle]);
   }
-  return restricted_delaunay(samples, packing.domain(), patch);
+  SurfaceMesh mesh = restricted_delaunay(samples, packing.domain(), patch);
+  // The feature curves' consecutive disks that the mesh joins.
+  std::set<std::pair<std::uint32_t, std::uint32_t>> edges;
+  for (const auto& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k) edges.insert(std::minmax(t[k], t[(k + 1) % 3]));
+  for (const auto& e : detail::feature_neighbours(packing))
+    if (edges.count(std::minmax(e[0], e[1]))) mesh.feature_edges.push_back(e);
+  return mesh;
 }
 
 SurfaceMesh restricted_delaunay(const std::vector<Vec3>& samples, const SurfaceDomain& surface,

@@ -1,0 +1,287 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// disktune-remesh-compare: disktune's remesh against CGAL 5.5's isotropic_remeshing on
+// the same surface, at the same vertex count, measured by the same (disktune's) quality
+// code in the same run. CGAL's remesher takes an edge length, not a vertex count, so its
+// length is calibrated until the count comes within 1 % of disktune's.
+//
+//   disktune-remesh-compare SURFACE.off --vertices N [--features ANGLE|none] [--seed S]
+//                           [--iterations K]
+//     --vertices    the vertex count (at least 4)
+//     --features    sharp-edge angle in degrees for both tools (default 60); none: no
+//                   features, and no protected CGAL row
+//     --seed        disktune's seed (default 1)
+//     --iterations  CGAL's number_of_iterations (default 10)
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
+#include <CGAL/Polygon_mesh_processing/detect_features.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Polygon_mesh_processing/remesh.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <array>
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "disktune/errors.h"
+#include "disktune/quality.h"
+#include "disktune/remesh.h"
+#include "disktune/restricted_delaunay.h"
+#include "disktune/surface_domain.h"
+#include "disktune/surface_features.h"
+#include "disktune/surface_mesh.h"
+
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using CgalMesh = CGAL::Surface_mesh<Kernel::Point_3>;
+namespace PMP = CGAL::Polygon_mesh_processing;
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+struct Args {
+  std::string path;
+  std::size_t vertices = 0;
+  std::optional<double> feature_angle = 60;  // nullopt: --features none
+  std::uint64_t seed = 1;
+  unsigned iterations = 10;
+};
+
+const char* const kUsage =
+    "usage: disktune-remesh-compare SURFACE.off --vertices N [--features ANGLE|none] [--seed S] "
+    "[--iterations K]\n";
+
+[[noreturn]] void bad_args(const std::string& why) {
+  std::fprintf(stderr, "disktune-remesh-compare: %s\n%s", why.c_str(), kUsage);
+  std::exit(2);
+}
+
+// Whole-string unsigned parse: "12x", "-3" and "" are errors, not 12, huge or 0.
+std::uint64_t parse_unsigned(const std::string& flag, const std::string& text) {
+  char* end = nullptr;
+  errno = 0;
+  const unsigned long long v = std::strtoull(text.c_str(), &end, 10);
+  if (text.empty() || text[0] == '-' || *end != '\0' || errno == ERANGE) {
+    bad_args(flag + " needs a non-negative integer, got '" + text + "'");
+  }
+  return v;
+}
+
+Args parse_args(int argc, char** argv) {
+  Args args;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "-h" || arg == "--help") {
+      std::fputs(kUsage, stdout);
+      std::exit(0);
+    }
+    if (arg.rfind("--", 0) != 0) {
+      if (!args.path.empty()) bad_args("more than one surface given ('" + args.path + "', '" + arg + "')");
+      args.path = arg;
+      continue;
+    }
+    if (i + 1 >= argc) bad_args(arg + " needs a value");
+    const std::string value = argv[++i];
+    if (arg == "--vertices") {
+      args.vertices = parse_unsigned(arg, value);
+      if (args.vertices < 4) bad_args("--vertices must be at least 4");
+    } else if (arg == "--features") {
+      if (value == "none") {
+        args.feature_angle.reset();
+        continue;
+      }
+      char* end = nullptr;
+      const double angle = std::strtod(value.c_str(), &end);
+      if (value.empty() || *end != '\0' || !(angle > 0 && angle < 180)) {
+        bad_args("--features needs an angle in (0, 180) degrees or 'none', got '" + value + "'");
+      }
+      args.feature_angle = angle;
+    } else if (arg == "--seed") {
+      args.seed = parse_unsigned(arg, value);
+    } else if (arg == "--iterations") {
+      const std::uint64_t k = parse_unsigned(arg, value);
+      if (k < 1 || k > 1000) bad_args("--iterations must be in [1, 1000]");
+      args.iterations = static_cast<unsigned>(k);
+    } else {
+      bad_args("unknown option " + arg);
+    }
+  }
+  if (args.path.empty()) bad_args("no surface file given");
+  if (args.vertices == 0) bad_args("--vertices is required");
+  return args;
+}
+
+// After collect_garbage a Surface_mesh's vertex indices are 0..n-1, so they carry over.
+disktune::SurfaceMesh to_disktune(CgalMesh mesh) {
+  mesh.collect_garbage();
+  disktune::SurfaceMesh out;
+  out.vertices.reserve(mesh.number_of_vertices());
+  for (const auto v : mesh.vertices()) {
+    const auto& p = mesh.point(v);
+    out.vertices.push_back({p.x(), p.y(), p.z()});
+  }
+  out.triangles.reserve(mesh.number_of_faces());
+  for (const auto f : mesh.faces()) {
+    std::array<std::uint32_t, 3> tri{};
+    int k = 0;
+    for (const auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) {
+      if (k < 3) tri[k] = static_cast<std::uint32_t>(v.idx());
+      ++k;
+    }
+    if (k != 3) throw disktune::InvalidInput("CGAL's output has a face of " + std::to_string(k) + " vertices");
+    out.triangles.push_back(tri);
+  }
+  return out;
+}
+
+struct Remeshed {
+  disktune::SurfaceMesh mesh;
+  double seconds = 0;
+  std::string note;
+};
+
+// One isotropic_remeshing of a fresh copy of `input` at edge length `length`; with
+// `feature_angle`, sharp edges are detected, split to the length (CGAL requires
+// protected edges no longer than 4/3 of it, and its own example splits them first) and
+// protected. Timed from feature detection to the end of remeshing.
+CgalMesh cgal_remesh_once(const CgalMesh& input, double length, std::optional<double> feature_angle,
+                          unsigned iterations, double& seconds) {
+  CgalMesh mesh = input;
+  const auto t0 = Clock::now();
+  if (feature_angle) {
+    auto is_sharp = mesh.add_property_map<CgalMesh::Edge_index, bool>("e:is_sharp", false).first;
+    PMP::detect_sharp_edges(mesh, *feature_angle, is_sharp);
+    std::vector<CgalMesh::Edge_index> sharp;
+    for (const auto e : mesh.edges()) {
+      if (is_sharp[e]) sharp.push_back(e);
+    }
+    PMP::split_long_edges(sharp, length, mesh, CGAL::parameters::edge_is_constrained_map(is_sharp));
+    PMP::isotropic_remeshing(faces(mesh), length, mesh,
+                             CGAL::parameters::number_of_iterations(iterations)
+                                 .edge_is_constrained_map(is_sharp)
+                                 .protect_constraints(true));
+  } else {
+    PMP::isotropic_remeshing(faces(mesh), length, mesh, CGAL::parameters::number_of_iterations(iterations));
+  }
+  seconds = since(t0);
+  return mesh;
+}
+
+// Calibrates the edge length so the vertex count comes within 1 % of `target`: a closed
+// triangle mesh of n vertices has about 2n triangles, each sqrt(3)/4 L^2 when
+// equilateral; then L is rescaled by sqrt(count / target) (the count goes as 1 / L^2),
+// at most 6 tries, keeping the closest.
+Remeshed cgal_remesh(const CgalMesh& input, std::size_t target, std::optional<double> feature_angle,
+                     unsigned iterations) {
+  const double n = static_cast<double>(target);
+  double length = std::sqrt(4 * PMP::area(input) / (std::sqrt(3.0) * 2 * n));
+  std::optional<CgalMesh> best;
+  double best_error = 1e300, best_seconds = 0, best_length = 0;
+  int tries = 0;
+  for (; tries < 6 && best_error > 0.01; ++tries) {
+    double seconds = 0;
+    CgalMesh mesh = cgal_remesh_once(input, length, feature_angle, iterations, seconds);
+    const double count = static_cast<double>(mesh.number_of_vertices());
+    const double error = std::abs(count - n) / n;
+    if (error < best_error) {
+      best_error = error, best_seconds = seconds, best_length = length;
+      best = std::move(mesh);
+    }
+    length *= std::sqrt(count / n);
+  }
+  char note[160];
+  std::snprintf(note, sizeof note, "edge length %.6g after %d tr%s (count off by %.2f %%)", best_length, tries,
+                tries == 1 ? "y" : "ies", 100 * best_error);
+  return {to_disktune(*best), best_seconds, note};
+}
+
+struct Row {
+  std::string tool;
+  Remeshed result;
+};
+
+void print_row(const Row& row, const disktune::SurfaceDomain& surface, double radius, double diagonal) {
+  const disktune::SurfaceMesh& mesh = row.result.mesh;
+  // One radius for every vertex, disktune's, so edge-length ratios compare across rows.
+  const std::vector<double> vertex_radius(mesh.vertices.size(), radius);
+  const disktune::SurfaceMeshQuality q = disktune::measure_surface_mesh(mesh, vertex_radius);
+  const double hausdorff = disktune::hausdorff_distance(mesh, surface, 100000, 1) / diagonal;
+  const disktune::SurfaceMeshCheck check = disktune::check_surface_mesh(mesh);
+  std::string topology = check.manifold ? "yes / " + std::to_string(check.genus) : "no";
+  if (check.isolated_vertices) topology += ", " + std::to_string(check.isolated_vertices) + " isolated";
+  if (check.boundary_edges) topology += ", " + std::to_string(check.boundary_edges) + " boundary edges";
+  if (check.components != 1) topology += ", " + std::to_string(check.components) + " components";
+  std::printf("| %s | %zu | %.2f | %.2f | %.4f | %.4f | %.2e | %s | %.3f |\n", row.tool.c_str(),
+              mesh.vertices.size(), q.angles.min, q.angles.max, q.angles.fraction_50_70,
+              q.angles.fraction_obtuse_triangles, hausdorff, topology.c_str(), row.result.seconds);
+  if (!check.problems.empty()) std::fprintf(stderr, "%s: %s\n", row.tool.c_str(), check.problems.c_str());
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const Args args = parse_args(argc, argv);
+  try {
+    disktune::SurfaceDomain surface = disktune::read_surface(args.path);
+    CgalMesh cgal_input;
+    if (!PMP::IO::read_polygon_mesh(args.path, cgal_input) || !CGAL::is_triangle_mesh(cgal_input)) {
+      std::fprintf(stderr, "disktune-remesh-compare: CGAL cannot read %s as a triangle mesh\n", args.path.c_str());
+      return 1;
+    }
+    const double diagonal = disktune::norm(surface.bbox_max() - surface.bbox_min());
+
+    std::vector<Row> rows;
+    // disktune: timed from feature detection to the mesh, as the CGAL rows are.
+    disktune::RemeshOptions options;
+    options.seed = args.seed;
+    const auto t0 = Clock::now();
+    if (args.feature_angle) surface.set_features(disktune::detect_features(surface, {*args.feature_angle, 60}));
+    disktune::RemeshResult result =
+        disktune::remesh(std::make_shared<const disktune::SurfaceDomain>(surface), args.vertices, options);
+    const double disktune_seconds = since(t0);
+    const std::string tuned = result.tuning.reached ? "count reached"
+                                                    : "count NOT reached: " + std::to_string(result.tuning.count);
+    rows.push_back({"disktune remesh", {std::move(result.mesh), disktune_seconds, tuned}});
+
+    rows.push_back({"CGAL isotropic_remeshing", cgal_remesh(cgal_input, args.vertices, std::nullopt, args.iterations)});
+    if (args.feature_angle) {
+      rows.push_back({"CGAL isotropic_remeshing, sharp edges protected",
+                      cgal_remesh(cgal_input, args.vertices, args.feature_angle, args.iterations)});
+    }
+
+    char features[64] = "none";
+    if (args.feature_angle) {
+      std::snprintf(features, sizeof features, "%g deg (%zu feature edges)", *args.feature_angle,
+                    surface.features().edges.size());
+    }
+    std::printf("%s: %zu vertices, %zu triangles, genus %d, %s; target %zu vertices; features %s; seed %llu; "
+                "CGAL iterations %u\n\n",
+                args.path.c_str(), surface.vertices().size(), surface.triangles().size(), surface.genus(),
+                surface.is_closed() ? "closed" : "open", args.vertices, features,
+                static_cast<unsigned long long>(args.seed), args.iterations);
+    std::printf("| tool | vertices | min angle | max angle | angles in [50,70] | obtuse triangles "
+                "| Hausdorff / bbox diagonal | manifold / genus | time (s) |\n");
+    std::printf("| --- | ---: | ---: | ---: | ---: | ---: | ---: | --- | ---: |\n");
+    for (const Row& row : rows) print_row(row, surface, result.radius, diagonal);
+    std::printf("\nNotes:\n");
+    for (const Row& row : rows) std::printf("- %s: %s\n", row.tool.c_str(), row.result.note.c_str());
+    std::printf("- Times are wall clock, from feature detection to the finished mesh, reading excluded. "
+                "A CGAL time is one remeshing pass at the calibrated edge length, excluding the "
+                "calibration passes before it.\n");
+    std::printf("- Angle fractions are of all triangle angles; obtuse is the fraction of triangles. "
+                "Hausdorff: symmetric, 100000 samples per side, seed 1.\n");
+    return 0;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "disktune-remesh-compare: %s\n", e.what());
+    return 1;
+  }
+}
