@@ -202,11 +202,13 @@ TEST(SurfaceMeshCheck, ClosedAndOpenTetrahedron) {
   EXPECT_EQ(closed.genus, 0);
   EXPECT_EQ(closed.components, 1u);
   EXPECT_EQ(closed.boundary_edges, 0u);
+  EXPECT_EQ(closed.boundary_loops, 0u);
   EXPECT_EQ(closed.problems, "");
 
   const SurfaceMeshCheck open = check_surface_mesh({kTetra, {kTetraTris.begin(), kTetraTris.end() - 1}});
   EXPECT_TRUE(open.manifold && open.oriented);
   EXPECT_EQ(open.boundary_edges, 3u);  // one boundary loop: V - E + F = 4 - 6 + 3 = 1 = 2 - 0 - 1
+  EXPECT_EQ(open.boundary_loops, 1u);
   EXPECT_EQ(open.genus, 0);
   EXPECT_EQ(open.components, 1u);
   EXPECT_EQ(open.problems, "");

@@ -30,6 +30,7 @@ struct SurfaceMeshCheck {
   int genus = -1;              // sum over components of V - E + F = 2 - 2g - b; -1 unless manifold
   std::size_t boundary_edges = 0, non_manifold_edges = 0, non_manifold_vertices = 0,
               isolated_vertices = 0;
+  std::size_t boundary_loops = 0;  // compare with the input's: a mesh of a closed surface has none
   /// Empty when all is well; otherwise a sentence listing what is wrong and the likely fix.
   std::string problems;
 };

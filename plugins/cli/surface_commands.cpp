@@ -74,6 +74,8 @@ std::string topology_text(const SurfaceMeshCheck& check, const SurfaceDomain& su
   s << "manifold " << (check.manifold ? "yes" : "no");
   if (check.manifold) s << ", genus " << check.genus;
   s << " (input genus " << surface.genus() << ")";
+  if (check.manifold && check.boundary_loops != surface.boundary_loops().size())
+    s << ", " << check.boundary_loops << " boundary loops (input " << surface.boundary_loops().size() << ")";
   return s.str();
 }
 
@@ -86,6 +88,12 @@ void warn_topology(const SurfaceMeshCheck& check, const SurfaceDomain& surface, 
                  "more than two triangles, %zu bow-tie vertices); it was still %s. The samples are "
                  "too sparse for the surface: use a smaller radius\n",
                  check.non_manifold_edges, check.non_manifold_vertices, done);
+  } else if (check.boundary_loops != surface.boundary_loops().size()) {
+    std::fprintf(stderr,
+                 "disktune: warning: the restricted Delaunay mesh has %zu boundary loops, the input "
+                 "surface %zu: it has holes; it was still %s. The samples are too sparse for the "
+                 "surface there: use a smaller radius\n",
+                 check.boundary_loops, surface.boundary_loops().size(), done);
   } else if (check.genus != surface.genus()) {
     std::fprintf(stderr,
                  "disktune: warning: the restricted Delaunay mesh has genus %d, the input surface "
@@ -233,7 +241,7 @@ int run_surface_report(const SurfaceReportJob& job) {
       << "  \"mesh_check\": {\"manifold\": " << (m.check.manifold ? "true" : "false")
       << ", \"oriented\": " << (m.check.oriented ? "true" : "false")
       << ", \"genus\": " << m.check.genus << ", \"components\": " << m.check.components
-      << ", \"boundary_edges\": " << m.check.boundary_edges
+      << ", \"boundary_edges\": " << m.check.boundary_edges << ", \"boundary_loops\": " << m.check.boundary_loops
       << ", \"non_manifold_edges\": " << m.check.non_manifold_edges
       << ", \"non_manifold_vertices\": " << m.check.non_manifold_vertices
       << ", \"isolated_vertices\": " << m.check.isolated_vertices

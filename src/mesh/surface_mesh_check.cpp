@@ -108,7 +108,7 @@ SurfaceMeshCheck check_surface_mesh(const SurfaceMesh& mesh) {
   for (std::size_t v = 0; v < nv; ++v) {
     if (around[v].empty()) continue;
     ++euler[comp(v)];
-    if (on_boundary[v] && boundary.find(v) == v) ++loops[comp(v)];  // one root per loop
+    if (on_boundary[v] && boundary.find(v) == v) ++loops[comp(v)], ++c.boundary_loops;  // one root per loop
   }
   for (const std::size_t v : edge_lo) --euler[comp(v)];
   for (const Tri& t : tris) ++euler[comp(t[0])];
