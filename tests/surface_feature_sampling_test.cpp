@@ -11,7 +11,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <set>
+#include <string>
 #include <vector>
 
 #include "disktune/restricted_delaunay.h"
@@ -248,6 +250,44 @@ TEST(FeatureMeshing, FandiskMeshesAreManifoldsThatFollowTheFeaturesOverSeeds) {
       std::printf("[ features ] fandisk r %.2f seed %llu: mesh %s, %zu triangles across a feature, %zu wide pairs\n", r,
                   static_cast<unsigned long long>(seed), m.topology.summary().c_str(), m.straddling, wide);
     }
+  }
+}
+
+bool full_sweep() {
+  const char* v = std::getenv("DISKTUNE_SWEEP");
+  return v && std::string(v) == "full";
+}
+
+// Issue #15, item 2: the mesh of a sample with the default features is a manifold with
+// the input's genus and boundary loops, both counted by the oracle on the input too.
+// Four seeds a surface here, fifty in tests/invariant_sweep.sh. (The elephant at
+// r = 0.01 fails this for 1 seed in 20, seed 10: two edges in three triangles at a
+// crease whose feature curve ends inside the surface, so it cuts no patch apart;
+// docs/surfaces.md.)
+TEST(FeatureMeshing, SampleMeshesHaveTheInputsTopologyOverSeeds) {
+  struct Case {
+    const char* file;
+    double r;
+  };
+  const int seeds = full_sweep() ? 50 : 4;
+  for (const Case& c : {Case{"eight.off", 0.02}, Case{"fandisk.off", 0.02}, Case{"joint.off", 0.03},
+                        Case{"mesh_with_border.off", 0.2676}}) {
+    const auto surface = with_features(*test::surface_file(c.file));
+    const oracle::SurfaceMeshInput input = test::oracle_surface(*surface);
+    std::vector<std::array<std::size_t, 3>> input_tris(input.triangles.begin(), input.triangles.end());
+    const oracle::TopologyReport want = oracle::check_topology(input.vertices.size(), input_tris);
+    ASSERT_TRUE(want.manifold()) << c.file;
+    int good = 0;
+    for (int seed = 1; seed <= seeds; ++seed) {
+      Rng rng(static_cast<std::uint64_t>(seed));
+      const SurfacePacking p = sample_mps(surface, SurfaceSizing::constant(c.r), rng);
+      const MeshFindings m = mesh_findings(p);
+      const bool ok = m.topology.manifold() && m.topology.genus == want.genus &&
+                      m.topology.boundary_loops == want.boundary_loops && m.topology.components == want.components;
+      EXPECT_TRUE(ok) << c.file << " seed " << seed << ": " << m.topology.summary() << "; input: " << want.summary();
+      good += ok;
+    }
+    std::printf("[ features ] %s r %g: %d of %d sample meshes have the input's topology\n", c.file, c.r, good, seeds);
   }
 }
 
