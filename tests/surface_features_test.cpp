@@ -150,5 +150,48 @@ TEST(SurfaceFeatures, AFeatureMeetingAnOpenBoundaryEndsThere) {
   expect_curves_partition(f);
 }
 
+TEST(SurfaceFeatures, SetOnASurfaceTheyCutItIntoPatchesAndHoldFixedCurves) {
+  SurfaceDomain box = *test::box_surface({1.84, 0.4, 0.2}, {4, 3, 2});
+  EXPECT_EQ(box.patch_count(), 1u);  // no features: the components
+  EXPECT_TRUE(box.fixed_curves().empty());
+  const SurfaceFeatures f = detect_features(box);
+  box.set_features(f);
+  EXPECT_EQ(box.patch_count(), 6u);  // the faces
+  EXPECT_EQ(box.fixed_curves().size(), 12u);
+  // Each face's triangles share a patch, which no other face has (checked by the plane
+  // each triangle lies in: one coordinate constant at 0 or at the box's size).
+  std::map<std::pair<int, double>, std::set<std::uint32_t>> by_face;
+  for (std::size_t t = 0; t < box.triangles().size(); ++t) {
+    const auto& tri = box.triangles()[t];
+    for (int axis = 0; axis < 3; ++axis) {
+      const auto c = [&](std::size_t v) { return axis == 0 ? box.vertices()[v].x : axis == 1 ? box.vertices()[v].y : box.vertices()[v].z; };
+      if (c(tri[0]) == c(tri[1]) && c(tri[1]) == c(tri[2])) by_face[{axis, c(tri[0])}].insert(box.triangle_patch()[t]);
+    }
+  }
+  ASSERT_EQ(by_face.size(), 6u);
+  std::set<std::uint32_t> all;
+  for (const auto& [face, patches] : by_face) {
+    EXPECT_EQ(patches.size(), 1u);
+    all.insert(*patches.begin());
+  }
+  EXPECT_EQ(all.size(), 6u);
+  // Bad features are refused: a curve along no feature edge, an open curve not ending at
+  // corners, a missing vertex.
+  SurfaceFeatures bad = f;
+  bad.curves[0].vertices.back() = bad.curves[0].vertices.front();
+  EXPECT_THROW(box.set_features(bad), InvalidInput);
+  bad = f;
+  bad.corners.clear();
+  EXPECT_THROW(box.set_features(bad), InvalidInput);
+  bad = f;
+  bad.curves[0].vertices[0] = 1000000;
+  EXPECT_THROW(box.set_features(bad), InvalidInput);
+  EXPECT_EQ(box.patch_count(), 6u);  // unchanged by the refused ones
+  EXPECT_EQ(box.fixed_curves().size(), 12u);
+  box.set_features({});
+  EXPECT_EQ(box.patch_count(), 1u);
+  EXPECT_TRUE(box.fixed_curves().empty());
+}
+
 }  // namespace
 }  // namespace disktune

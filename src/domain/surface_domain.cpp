@@ -133,7 +133,6 @@ SurfaceDomain::SurfaceDomain(std::vector<Vec3> vertices, std::vector<Triangle> t
   check_vertices(vertices_, triangles_);
   for_each_edge(half, [&](std::size_t, std::size_t) { ++edge_count_; });
   loops_ = chain_boundary(vertices_.size(), half);
-  set_features({});
 
   // Components through shared vertices (edges, after the fan check), numbered in
   // triangle order; then Euler's formula per component.
@@ -171,6 +170,7 @@ SurfaceDomain::SurfaceDomain(std::vector<Vec3> vertices, std::vector<Triangle> t
     const Vec3 a = vertices_[t[0]];
     area_ += 0.5 * norm(cross(vertices_[t[1]] - a, vertices_[t[2]] - a));
   }
+  set_features({});
 }
 
 int SurfaceDomain::genus() const { return std::accumulate(genus_.begin(), genus_.end(), 0); }
@@ -219,12 +219,19 @@ void SurfaceDomain::set_features(SurfaceFeatures features) {
     }
   }
   curves_.insert(curves_.end(), features.curves.begin(), features.curves.end());
-  // Patches: triangles joined across the edges that are no feature edge.
+  // Patches: triangles joined across the edges that are no feature edge; without
+  // features, the components.
+  features_ = std::move(features);
+  if (features_.edges.empty()) {
+    patch_.assign(component_.begin(), component_.end());
+    patch_count_ = genus_.size();
+    return;
+  }
   UnionFind uf(triangles_.size());
   const std::vector<HalfEdge> half = sorted_half_edges(triangles_);
   for_each_edge(half, [&](std::size_t first, std::size_t last) {
     if (last - first == 2 &&
-        !std::binary_search(features.edges.begin(), features.edges.end(), MeshEdge{half[first].lo, half[first].hi}))
+        !std::binary_search(features_.edges.begin(), features_.edges.end(), MeshEdge{half[first].lo, half[first].hi}))
       uf.unite(half[first].tri, half[first + 1].tri);
   });
   std::vector<std::uint32_t> of_root(triangles_.size(), ~0u);
@@ -235,7 +242,6 @@ void SurfaceDomain::set_features(SurfaceFeatures features) {
     if (p == ~0u) p = static_cast<std::uint32_t>(patch_count_++);
     patch_[t] = p;
   }
-  features_ = std::move(features);
 }
 
 namespace {
