@@ -24,6 +24,8 @@ using MeshEdge = std::array<std::size_t, 2>;
 struct SurfaceCurve {
   std::vector<std::size_t> vertices;
   bool closed = false;
+  /// Its edges: edge k runs from vertices[k] to vertices[(k + 1) % size].
+  std::size_t edge_count() const { return vertices.size() - (closed ? 0 : 1); }
 };
 
 /// Sharp features of a surface (surface_features.h finds them): feature edges chained
@@ -72,6 +74,8 @@ class SurfaceDomain {
   /// into open curves at the feature corners on it (a loop with none stays closed), then
   /// every feature curve. Corners (features().corners) are the ends of the open ones.
   const std::vector<SurfaceCurve>& fixed_curves() const { return curves_; }
+  /// The index in fixed_curves() of the first feature curve (the boundary pieces come first).
+  std::size_t first_feature_curve() const { return curves_.size() - features_.curves.size(); }
   /// The patches the feature curves cut the surface into: triangles joined across every
   /// edge that is no feature edge, numbered from 0 by their lowest triangle. Without
   /// features, the connected components.

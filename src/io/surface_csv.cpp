@@ -51,7 +51,7 @@ void read_surface_csv(const std::string& path, SurfacePacking& packing) {
   std::unordered_set<std::uint64_t> curve_edges;
   for (const SurfaceCurve& curve : domain.fixed_curves()) {
     const auto& v = curve.vertices;
-    for (std::size_t k = 0; k + 1 < v.size() + (curve.closed ? 1 : 0); ++k)
+    for (std::size_t k = 0; k < curve.edge_count(); ++k)
       curve_edges.insert(edge_key(v[k], v[(k + 1) % v.size()]));
   }
   const bool has_r = rows.columns == 4;

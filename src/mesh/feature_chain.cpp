@@ -12,14 +12,10 @@ std::vector<std::array<std::uint32_t, 2>> feature_neighbours(const SurfacePackin
   const SurfaceDomain& d = packing.domain();
   std::vector<std::array<std::uint32_t, 2>> out;
   if (d.features().curves.empty()) return out;
-  std::map<DiskId, std::uint32_t> vertex;
-  for (const DiskId id : packing.ids())
-    if (packing.flags(id) & kFixed) vertex.emplace(id, static_cast<std::uint32_t>(vertex.size()));
-  // Vertex numbers count every live disk, not only the fixed ones.
+  std::map<DiskId, std::uint32_t> vertex;  // each fixed disk's vertex number
   std::uint32_t n = 0;
   for (const DiskId id : packing.ids()) {
-    const auto it = vertex.find(id);
-    if (it != vertex.end()) it->second = n;
+    if (packing.flags(id) & kFixed) vertex.emplace(id, n);
     ++n;
   }
   const double r = packing.max_radius(), tol = 1e-9 * r;
@@ -27,7 +23,7 @@ std::vector<std::array<std::uint32_t, 2>> feature_neighbours(const SurfacePackin
     const auto& v = curve.vertices;
     std::map<DiskId, double> at;  // each fixed disk on the curve, by arc length
     double start = 0;
-    for (std::size_t k = 0; k + 1 < v.size() + (curve.closed ? 1 : 0); ++k) {
+    for (std::size_t k = 0; k < curve.edge_count(); ++k) {
       const Vec3 a = d.vertices()[v[k]], ab = d.vertices()[v[(k + 1) % v.size()]] - a;
       const double len = norm(ab);
       const int pieces = std::max(1, static_cast<int>(std::ceil(len / r)));

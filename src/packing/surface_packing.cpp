@@ -79,7 +79,7 @@ SurfaceIndex::SurfaceIndex(std::shared_ptr<const SurfaceDomain> domain, double c
   for (const SurfaceCurve& curve : domain_->fixed_curves()) {
     const auto& v = curve.vertices;
     curve_triangle_.emplace_back();
-    for (std::size_t k = 0; k + 1 < v.size() + (curve.closed ? 1 : 0); ++k)
+    for (std::size_t k = 0; k < curve.edge_count(); ++k)
       curve_triangle_.back().push_back(by_edge.at(edge_key(v[k], v[(k + 1) % v.size()])));
   }
 }

@@ -74,12 +74,12 @@ void sample_corners(SurfacePacking& packing) {
 // by) keeps none of them; the 1D darts then cover it.
 void lay_out_features(SurfacePacking& packing, Rng& rng) {
   const SurfaceDomain& d = packing.domain();
-  const std::size_t first = d.fixed_curves().size() - d.features().curves.size();
+  const std::size_t first = d.first_feature_curve();
   std::vector<double> measure;  // the integral of ds / r(s) from the curve's start to each vertex
   std::vector<DiskId> placed;
   for (std::size_t c = first; c < d.fixed_curves().size(); ++c) {
     const SurfaceCurve& curve = d.fixed_curves()[c];
-    const std::size_t edges = curve.vertices.size() - (curve.closed ? 0 : 1);
+    const std::size_t edges = curve.edge_count();
     const auto point = [&](std::size_t e, double t) { return packing.index().on_curve(c, e, t); };
     // The measure by the midpoint rule, eight pieces an edge.
     measure.assign(1, 0);
@@ -135,7 +135,7 @@ void sample_curves(SurfacePacking& packing, Rng& rng) {
   for (std::size_t c = 0; c < d.fixed_curves().size(); ++c) {
     const SurfaceCurve& curve = d.fixed_curves()[c];
     const auto& v = curve.vertices;
-    for (std::size_t k = 0; k + 1 < v.size() + (curve.closed ? 1 : 0); ++k) {
+    for (std::size_t k = 0; k < curve.edge_count(); ++k) {
       const std::size_t e = edges.size();
       edges.push_back({c, k, d.vertices()[v[k]], d.vertices()[v[(k + 1) % v.size()]], {}});
       found.clear();

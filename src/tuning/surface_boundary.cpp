@@ -42,8 +42,7 @@ class SurfaceCurves {
     return out;
   }
   bool is_feature(std::size_t c) const {
-    const SurfaceDomain& d = packing_.domain();
-    return c >= d.fixed_curves().size() - d.features().curves.size();
+    return c >= packing_.domain().first_feature_curve();
   }
   SurfacePoint point_at(const detail::Curve<Vec3>& c, std::size_t piece, double t) const {
     return packing_.index().on_curve(c.tag, piece, t);
@@ -62,17 +61,13 @@ class SurfaceCurves {
   SurfacePacking& packing_;
 };
 
-void respace(SurfacePacking& packing, double spacing_factor, Rng& rng) {
+}  // namespace
+
+void respace_surface_boundary(SurfacePacking& packing, double spacing_factor, Rng& rng) {
   SurfaceCurves curves(packing);
   detail::CurveTuner<SurfaceCurves> tuner(curves);
   for (std::size_t c = 0; c < tuner.curve_count(); ++c)
     tuner.tune_one(c, curves.is_feature(c) ? std::min(spacing_factor, kFeatureSpacing) : spacing_factor, rng);
-}
-
-}  // namespace
-
-void respace_surface_boundary(SurfacePacking& packing, double spacing_factor, Rng& rng) {
-  respace(packing, spacing_factor, rng);
 }
 
 long boundary_inject(SurfacePacking& packing, Rng& rng) {

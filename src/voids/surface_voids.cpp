@@ -202,10 +202,8 @@ void uncovered_on_curve_edge(const SurfacePacking& packing, std::size_t c, std::
 std::vector<CurveGap> uncovered_curves(const SurfacePacking& packing, bool fixed_only) {
   std::vector<CurveGap> gaps;
   const auto& curves = packing.domain().fixed_curves();
-  for (std::size_t c = 0; c < curves.size(); ++c) {
-    const std::size_t edges = curves[c].vertices.size() - (curves[c].closed ? 0 : 1);
-    for (std::size_t e = 0; e < edges; ++e) uncovered_on_curve_edge(packing, c, e, fixed_only, gaps);
-  }
+  for (std::size_t c = 0; c < curves.size(); ++c)
+    for (std::size_t e = 0; e < curves[c].edge_count(); ++e) uncovered_on_curve_edge(packing, c, e, fixed_only, gaps);
   return gaps;
 }
 
