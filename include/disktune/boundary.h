@@ -18,8 +18,9 @@ namespace disktune {
 using BoundaryLoops = std::vector<std::vector<DiskId>>;
 
 /// 1D maximal Poisson-disk sampling of the boundary: a fixed disk on every corner, then
-/// darts uniform over the uncovered part of each segment until none is left; radii are
-/// the packing's radius_at. Call on a packing with no disks near the boundary (a new
+/// each segment's uncovered stretches laid out evenly at most kCurveSpacing r apart where
+/// that fits (sampling.h), then darts uniform over the uncovered part of each segment
+/// until none is left; radii are the packing's radius_at. Call on a packing with no disks near the boundary (a new
 /// one). Throws InvalidInput naming two corners when one lies in the other's disk.
 void sample_boundary(Packing& packing, const PlanarDomain& domain, Rng& rng);
 

@@ -13,6 +13,12 @@
 
 namespace disktune {
 
+/// The widest spacing of the fixed disks laid out along a planar domain's boundary
+/// segments and a surface's sharp feature curves, in units of the local radius: below
+/// the sqrt(2) r under which no other disk can encroach on the curve between two
+/// consecutive ones (docs/planar.md, "Boundary spacing").
+constexpr double kCurveSpacing = 1.2;
+
 struct MpsOptions {
   /// Darts per active cell at each level of the dart-throwing phase.
   double darts_per_active_cell = 1.0;

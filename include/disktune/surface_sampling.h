@@ -6,17 +6,13 @@
 #include <memory>
 
 #include "disktune/random.h"
+#include "disktune/sampling.h"
 #include "disktune/surface_packing.h"
 
 namespace disktune {
 
-/// The spacing of the fixed disks on sharp feature curves, in units of the local radius:
-/// below the sqrt(2) r at which the edge between two consecutive ones is sure to be in
-/// the restricted Delaunay mesh (docs/surfaces.md, "Sharp features").
-constexpr double kFeatureSpacing = 1.2;
-
 /// A maximal Poisson-disk sample of the surface: fixed disks first (one on each feature
-/// corner, each feature curve laid out evenly kFeatureSpacing r apart where that fits,
+/// corner, each feature curve laid out evenly kCurveSpacing r apart where that fits,
 /// then 1D darts over what is left uncovered of the fixed curves), then darts over the
 /// surface by area and over ever smaller cells around the uncovered part, then one disk
 /// at a uniform point of each void left (never at a void's vertex, which would bias the

@@ -6,10 +6,37 @@
 #include <sstream>
 
 #include "disktune/boundary.h"
+#include "curve_layout.h"
 #include "disktune/errors.h"
+#include "disktune/tolerance.h"
 #include "disktune/voids.h"
 
 namespace disktune {
+
+namespace {
+
+// Each segment's uncovered stretches laid out evenly (curve_layout.h), from the disk that
+// ends each: the segment's own corner disk, else a new disk at the stretch's end, just
+// outside the disk of another segment that covers up to there (near a sharp corner).
+void lay_out_segments(Packing& packing, const PlanarDomain& domain) {
+  for (const BoundarySegment& s : domain.segments()) {
+    const auto at = [&](double t) { return s.a + (s.b - s.a) * t; };
+    const auto radius = [&](Vec2 x) { return packing.radius_at(x); };
+    const auto place = [&](Vec2 x) { return packing.covered(x) ? kNoDisk : packing.insert(x, radius(x), kFixed); };
+    const auto remove = [&](DiskId id) { packing.remove(id); };
+    // Is the end t of a stretch where corner c's disk ends (not beyond it)?
+    const auto ends_at = [&](double t, Vec2 c) { return distance(at(t), c) <= radius(c) * (1 + 4 * kRelTol); };
+    // A new end disk just inside the stretch, clear of the covering disk's tolerance.
+    const double inset = 4 * kRelTol * packing.max_radius() / distance(s.a, s.b);
+    for (const auto& g : uncovered_on_segment(packing, s.a, s.b, true)) {
+      const bool from_corner = ends_at(g[0], s.a), to_corner = ends_at(g[1], s.b);
+      const double from = from_corner ? 0.0 : g[0] + inset, to = to_corner ? 1.0 : g[1] - inset;
+      if (from < to) detail::lay_out_evenly(from, to, !from_corner, !to_corner, 0, 8, at, radius, place, remove);
+    }
+  }
+}
+
+}  // namespace
 
 void fill_boundary_voids(Packing& packing, const PlanarDomain& domain, Rng& rng) {
   std::vector<BoundarySegment> segments = domain.segments();
@@ -64,6 +91,7 @@ void sample_boundary(Packing& packing, const PlanarDomain& domain, Rng& rng) {
       packing.insert(corner, r, kFixed);
     }
   }
+  lay_out_segments(packing, domain);
   fill_boundary_voids(packing, domain, rng);
 }
 

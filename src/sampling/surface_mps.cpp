@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <map>
 
+#include "curve_layout.h"
 #include "disktune/errors.h"
 #include "disktune/surface_sampling.h"
 #include "disktune/surface_voids.h"
@@ -68,47 +69,25 @@ void sample_corners(SurfacePacking& packing) {
     if (!packing.covered(d.vertices()[v])) packing.insert({d.vertices()[v], triangle_at[v]}, kFixed);
 }
 
-// Each feature curve's disks evenly in ds / r(s), at most kFeatureSpacing r apart:
-// between its corner disks, or around a closed curve from a random point. A curve where
-// that does not fit (a placed disk would conflict: a short curve, or another curve close
-// by) keeps none of them; the 1D darts then cover it.
-void lay_out_features(SurfacePacking& packing, Rng& rng) {
+// Each fixed curve's disks laid out evenly (curve_layout.h): between its corner disks,
+// or around a closed curve (a boundary loop without corners) from a random point. A curve
+// where that does not fit (a short curve, or another curve close by) keeps none of them;
+// the 1D darts then cover it.
+void lay_out_curves(SurfacePacking& packing, Rng& rng) {
   const SurfaceDomain& d = packing.domain();
-  const std::size_t first = d.first_feature_curve();
-  std::vector<double> measure;  // the integral of ds / r(s) from the curve's start to each vertex
-  std::vector<DiskId> placed;
-  for (std::size_t c = first; c < d.fixed_curves().size(); ++c) {
+  for (std::size_t c = 0; c < d.fixed_curves().size(); ++c) {
     const SurfaceCurve& curve = d.fixed_curves()[c];
     const std::size_t edges = curve.edge_count();
-    const auto point = [&](std::size_t e, double t) { return packing.index().on_curve(c, e, t); };
-    // The measure by the midpoint rule, eight pieces an edge.
-    measure.assign(1, 0);
-    for (std::size_t e = 0; e < edges; ++e) {
-      const double len = norm(point(e, 1).p - point(e, 0).p);
-      double m = 0;
-      for (int k = 0; k < 8; ++k) m += len / 8 / packing.radius_at(point(e, (k + 0.5) / 8));
-      measure.push_back(measure.back() + m);
-    }
-    // The fewest steps no wider than kFeatureSpacing r first; one fewer where the chord
-    // of a step across a bend came out shorter than r, while still below sqrt(2) r.
-    const double total = measure.back();
-    const double phase = curve.closed ? uniform01(rng) : 0;
-    for (auto steps = static_cast<std::size_t>(std::ceil(total / kFeatureSpacing));
-         steps >= 2 && total / static_cast<double>(steps) < std::sqrt(2.0) * (1 - 1e-3); --steps) {
-      placed.clear();
-      bool fits = true;
-      for (std::size_t i = curve.closed ? 0 : 1; i < steps && fits; ++i) {
-        const double m = std::fmod(total * (static_cast<double>(i) + phase) / static_cast<double>(steps), total);
-        const std::size_t e = std::min<std::size_t>(
-            std::upper_bound(measure.begin(), measure.end(), m) - measure.begin() - 1, edges - 1);
-        const double span = measure[e + 1] - measure[e];
-        const SurfacePoint q = point(e, span > 0 ? std::clamp((m - measure[e]) / span, 0.0, 1.0) : 0);
-        fits = !packing.covered(q.p);
-        if (fits) placed.push_back(packing.insert(q, kFixed));
-      }
-      if (fits) break;
-      for (const DiskId id : placed) packing.remove(id);
-    }
+    // u in [0, edges]: edge floor(u) at t = u - floor(u).
+    const auto at = [&](double u) {
+      const auto e = std::min(static_cast<std::size_t>(std::max(u, 0.0)), edges - 1);
+      return packing.index().on_curve(c, e, std::clamp(u - static_cast<double>(e), 0.0, 1.0));
+    };
+    const auto radius = [&](const SurfacePoint& q) { return packing.radius_at(q); };
+    const auto place = [&](const SurfacePoint& q) { return packing.covered(q.p) ? kNoDisk : packing.insert(q, kFixed); };
+    const auto remove = [&](DiskId id) { packing.remove(id); };
+    detail::lay_out_evenly(0, static_cast<double>(edges), curve.closed, false, curve.closed ? uniform01(rng) : 0,
+                           8 * edges, at, radius, place, remove);
   }
 }
 
@@ -386,7 +365,7 @@ void fill_sliver(SurfacePacking& packing, const Cells& cells, const Cell& c, Rng
 SurfacePacking sample_mps(std::shared_ptr<const SurfaceDomain> domain, const SurfaceSizing& sizing, Rng& rng) {
   SurfacePacking packing(std::move(domain), sizing);
   sample_corners(packing);
-  lay_out_features(packing, rng);
+  lay_out_curves(packing, rng);
   sample_curves(packing, rng);
   // Darts by area over the whole surface, as many as the count at area fraction 1 (an
   // MPS reaches about half of it); then cells small enough that a disk centered in one

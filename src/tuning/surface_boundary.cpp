@@ -6,7 +6,7 @@
 // it (two stretches of the loop close in space) is seen by the core's chord-distance
 // checks. Every other curve runs between two corner disks, which stay.
 //
-// Feature curves are never spaced wider than kFeatureSpacing r, below the sqrt(2) r
+// Feature curves are never spaced wider than kCurveSpacing r, below the sqrt(2) r
 // that keeps the edge between consecutive feature disks in the restricted Delaunay mesh
 // (surface_mps.cpp lays them out so).
 #include <algorithm>
@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "curve_tuning.h"
-#include "disktune/surface_sampling.h"
+#include "disktune/sampling.h"
 #include "disktune/surface_tuning.h"
 #include "surface_repair.h"
 
@@ -67,7 +67,7 @@ void respace_surface_boundary(SurfacePacking& packing, double spacing_factor, Rn
   SurfaceCurves curves(packing);
   detail::CurveTuner<SurfaceCurves> tuner(curves);
   for (std::size_t c = 0; c < tuner.curve_count(); ++c)
-    tuner.tune_one(c, curves.is_feature(c) ? std::min(spacing_factor, kFeatureSpacing) : spacing_factor, rng);
+    tuner.tune_one(c, curves.is_feature(c) ? std::min(spacing_factor, kCurveSpacing) : spacing_factor, rng);
 }
 
 long boundary_inject(SurfacePacking& packing, Rng& rng) {
