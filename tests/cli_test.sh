@@ -205,7 +205,16 @@ expect planar-report 0 "maximal, conflict-free" -- "$bin" report p8.csv --domain
 grep -q '"interior_triangles"' p8.json && grep -q '"boundary_triangles"' p8.json && pass=$((pass + 1)) || { echo "FAIL planar report keys"; fails=$((fails + 1)); }
 expect planar-angle 2 "angle injection" -- "$bin" tune --domain hole.poly --radius 0.05 --input p.csv --target-fraction 0.8 --method angle
 expect planar-report-png 2 "periodic box only" -- "$bin" report p8.csv --domain hole.poly --radius 0.05 --png-dir pics
-expect planar-big-radius 2 "corners" -- "$bin" sample --domain hole.poly --radius 0.5 --output z.csv
+# A radius too large for the corners (each holds a disk) becomes a feature sizing, said
+# in a note; mesh and report make the same choice, so the CSV's radii match.
+expect planar-big-radius 0 "note: r = 0.5 does not fit this domain .*--sizing auto:0.5" -- "$bin" sample --domain hole.poly --radius 0.5 --output big.csv
+expect planar-big-radius-report 0 "maximal, conflict-free" -- "$bin" report big.csv --domain hole.poly --radius 0.5
+expect planar-auto 0 "feature sizing min\(0.05, 0.45 lfs graded at 0.2\)" -- "$bin" sample --domain hole.poly --sizing auto:0.05 --output auto.csv
+expect planar-auto-bad 2 "expected auto:RMAX or auto:RMAX,G" -- "$bin" sample --domain hole.poly --sizing auto:x --output z.csv
+# A hole 1e-10 from the outer corner: no feature sizing can hold it; refused, not a hang.
+sed 's/^5 0.3 0.3$/5 1e-10 1e-10/; s/^6 0.7 0.3$/6 0.7 1e-10/; s/^8 0.3 0.7$/8 1e-10 0.7/' hole.poly > touching.poly
+expect planar-auto-too-small 2 "features too small for it \(near \(1e-10, 1e-10\) two boundary parts are 1e-10 apart" -- timeout 60 "$bin" sample --domain touching.poly --radius 0.02 --output z.csv
+expect planar-auto-periodic 2 "feature sizing needs a planar domain" -- "$bin" sample --sizing auto:0.05 --output z.csv
 absent planar-big-radius-output z.csv
 printf 'x,y,r\n0.5,0.5,0.05\n' > inhole.csv
 expect planar-point-in-hole 2 "inhole.csv:2: center \(0.5, 0.5\) lies outside the domain.*\(--domain\)" -- "$bin" tune --domain hole.poly --radius 0.05 --input inhole.csv --target-fraction 0.8

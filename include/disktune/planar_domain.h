@@ -6,6 +6,7 @@
 #include <array>
 #include <cstddef>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 #include "disktune/frame.h"
@@ -50,8 +51,17 @@ class PlanarDomain {
   /// hold at most 4e9 disks (the most a packing can number; whether it fits in memory
   /// is check_resources's question, resources.h).
   void validate_radius(double r) const;
+  /// True when no two corners are closer than r: one radius r gives every corner its
+  /// disk. Where it does not, a sizing that shrinks near them can (feature_sizing).
+  bool corners_fit(double r) const;
 
  private:
+  // Two corners, each as {loop, index}, and their squared distance.
+  struct CornerPair {
+    std::array<std::size_t, 2> first, second;
+    double d2;
+  };
+  std::optional<CornerPair> conflicting_corners(double r) const;
   struct CellGrid;  // the inside/outside/crossed background grid
   std::vector<std::vector<Vec2>> loops_;
   double area_ = 0;

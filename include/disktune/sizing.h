@@ -51,9 +51,28 @@ Sizing grid_sizing(const std::string& path);
 Sizing boundary_grading_sizing(std::shared_ptr<const PlanarDomain> domain, double r_min,
                                double r_max, double g);
 
+/// The share of the local feature size a feature sizing gives the radius: under a half,
+/// so that every segment holds a disk between its two corner disks and facing boundary
+/// parts stay at least 2.2 r apart (docs/sizing.md, "Feature sizing").
+constexpr double kFeatureShare = 0.45;
+/// The gradation (Lipschitz constant) of a feature sizing unless told otherwise: it
+/// keeps Delaunay angles above 14.5 degrees (angle_bound_degrees).
+constexpr double kFeatureGradation = 0.2;
+
+/// Local feature size sizing for a planar domain: r(x) = min(r_max, the smallest
+/// kFeatureShare lfs(p) + gradation |x - p| over boundary sites p), where lfs(p) is the
+/// distance from p to the nearest boundary segment other than p's own and those next to
+/// it along its loop (at a polygon vertex: the nearest segment not ending there). The
+/// radius shrinks near thin parts, close holes and short segments, grows away from them
+/// at the gradation, and is r_max elsewhere; it is `gradation`-Lipschitz. Sites lie on the
+/// boundary a quarter of their radius apart; evaluating r looks at the sites within
+/// r_max / gradation. Throws InvalidInput unless r_max > 0 and 0 < gradation < 0.5.
+Sizing feature_sizing(std::shared_ptr<const PlanarDomain> domain, double r_max,
+                      double gradation = kFeatureGradation);
+
 /// Parses the command line's --sizing, trying in this order: a number (constant),
-/// "boundary:RMIN,RMAX,G" (for a planar domain only: throws InvalidInput when domain is
-/// null), a path to an existing file (grid_sizing), else an expression.
+/// "boundary:RMIN,RMAX,G" and "auto:RMAX[,G]" (feature_sizing) (for a planar domain only:
+/// throws InvalidInput when domain is null), a path to an existing file (grid_sizing), else an expression.
 Sizing parse_sizing(const std::string& spec, std::shared_ptr<const PlanarDomain> domain);
 
 /// What sampling r over a domain found.

@@ -141,15 +141,27 @@ CommandDomain open_domain(const DomainArgs& args) {
     throw InvalidInput("give the disk radius with --radius R, or radii that vary with --sizing SPEC "
                        "(one of the two)");
   }
-  // What a sample needs is known, and refused when too much, before anything is built
-  // for it (a packing's grid alone grows as 1 / r^2).
-  if (args.sizing.empty()) {
+  // A radius too large for two corners of a planar domain (each holds a disk) becomes
+  // the largest radius of a feature sizing, which shrinks it near small features. What a
+  // sample needs is known, and refused when too much, before anything is built for it
+  // (a packing's grid alone grows as 1 / r^2).
+  const bool fits = args.sizing.empty() && (d.box || !std::isfinite(args.radius) || !(args.radius > 0) ||
+                                            d.planar->corners_fit(args.radius));
+  if (fits) {
     d.radius = args.radius;
     d.need = d.box ? estimate_resources(*d.box, d.radius) : estimate_resources(*d.planar, d.radius);
     if (args.guarded) check_memory(d.need, args.max_memory);
     d.box ? d.box->validate_radius(d.radius) : d.planar->validate_radius(d.radius);
   } else {
-    d.sizing = std::make_shared<const Sizing>(with_flags("--sizing", [&] { return parse_sizing(args.sizing, d.planar); }));
+    if (args.sizing.empty()) {
+      d.sizing = std::make_shared<const Sizing>(feature_sizing(d.planar, args.radius));
+      std::fprintf(stderr,
+                   "disktune: note: r = %g does not fit this domain (two of its corners are closer than r); "
+                   "using --sizing auto:%g, which shrinks r near small features (docs/sizing.md)\n",
+                   args.radius, args.radius);
+    } else {
+      d.sizing = std::make_shared<const Sizing>(with_flags("--sizing", [&] { return parse_sizing(args.sizing, d.planar); }));
+    }
     const Frame& frame = d.box ? d.box->frame() : d.planar->frame();
     const SizingStats stats = measure_sizing(*d.sizing, frame, d.planar.get());
     check_gradation(stats);  // L >= 1/2: no angle bound

@@ -80,10 +80,9 @@ Vec2 PlanarDomain::random_point(Rng& rng) const {
   }
 }
 
-void PlanarDomain::validate_radius(double r) const {
-  std::ostringstream domain;
-  domain << "this domain of area " << area_;
-  detail::check_radius_for_area(r, area_, domain.str());
+// The closest two corners closer than r, as (loop, index) pairs and their squared
+// distance, if any.
+std::optional<PlanarDomain::CornerPair> PlanarDomain::conflicting_corners(double r) const {
   // A disk sits on every corner: corners closer than r would conflict. Bin the corners
   // in cells of side r (sorted keys, so tiny r costs no memory) and compare neighbours.
   struct Corner {
@@ -118,12 +117,23 @@ void PlanarDomain::validate_radius(double r) const {
       }
     }
   }
-  if (first) {
-    const Vec2 p = loops_[first->loop][first->index], q = loops_[second->loop][second->index];
+  if (!first) return std::nullopt;
+  return CornerPair{{first->loop, first->index}, {second->loop, second->index}, best2};
+}
+
+bool PlanarDomain::corners_fit(double r) const { return !conflicting_corners(r); }
+
+void PlanarDomain::validate_radius(double r) const {
+  std::ostringstream domain;
+  domain << "this domain of area " << area_;
+  detail::check_radius_for_area(r, area_, domain.str());
+  if (const auto pair = conflicting_corners(r)) {
+    const auto& [first, second, best2] = *pair;
+    const Vec2 p = loops_[first[0]][first[1]], q = loops_[second[0]][second[1]];
     std::ostringstream msg;
     msg << "radius " << r << " is too large for this domain: corners "
-        << detail::loop_text(first->loop) << ", vertex " << first->index << ' ' << point_text(p)
-        << ", and " << detail::loop_text(second->loop) << ", vertex " << second->index << ' '
+        << detail::loop_text(first[0]) << ", vertex " << first[1] << ' ' << point_text(p)
+        << ", and " << detail::loop_text(second[0]) << ", vertex " << second[1] << ' '
         << point_text(q) << ", are only " << std::sqrt(best2)
         << " apart, and each corner holds a disk; use r <= "
         << round_4_digits(std::sqrt(best2), false);

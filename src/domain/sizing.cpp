@@ -20,11 +20,12 @@ using detail::number_text;
 using detail::parse_number;
 using detail::trimmed;
 
-Sizing parse_boundary(const std::string& spec, const std::string& args,
-                      std::shared_ptr<const PlanarDomain> domain) {
+// The numbers after a "kind:" prefix, split at commas; refuses on a periodic box.
+std::vector<std::string> boundary_args(const std::string& spec, const std::string& args, const char* what,
+                                       const PlanarDomain* domain) {
   if (!domain) {
-    throw InvalidInput("sizing \"" + spec +
-                           "\": boundary grading needs a planar domain (on a periodic box there is "
+    throw InvalidInput("sizing \"" + spec + "\": " + what +
+                           " needs a planar domain (on a periodic box there is "
                            "no boundary); give a planar domain, or use a number or an expression in x and y",
                        InvalidInput::Remedy::domain);
   }
@@ -35,6 +36,21 @@ Sizing parse_boundary(const std::string& spec, const std::string& args,
     if (comma == std::string::npos) break;
     start = comma + 1;
   }
+  return parts;
+}
+
+Sizing parse_feature(const std::string& spec, const std::string& args, std::shared_ptr<const PlanarDomain> domain) {
+  const std::vector<std::string> parts = boundary_args(spec, args, "feature sizing", domain.get());
+  double r_max = 0, g = kFeatureGradation;
+  if (parts.size() > 2 || !parse_number(parts[0], r_max) || (parts.size() == 2 && !parse_number(parts[1], g))) {
+    throw InvalidInput("sizing \"" + spec + "\": expected auto:RMAX or auto:RMAX,G with numbers, e.g. auto:0.02");
+  }
+  return feature_sizing(std::move(domain), r_max, g);
+}
+
+Sizing parse_boundary(const std::string& spec, const std::string& args,
+                      std::shared_ptr<const PlanarDomain> domain) {
+  const std::vector<std::string> parts = boundary_args(spec, args, "boundary grading", domain.get());
   double v[3];
   if (parts.size() != 3 || !parse_number(parts[0], v[0]) || !parse_number(parts[1], v[1]) ||
       !parse_number(parts[2], v[2])) {
@@ -77,11 +93,13 @@ Sizing boundary_grading_sizing(std::shared_ptr<const PlanarDomain> domain, doubl
 
 Sizing parse_sizing(const std::string& spec, std::shared_ptr<const PlanarDomain> domain) {
   const std::string text = detail::sizing_text(
-      spec, "a radius (0.01), boundary:RMIN,RMAX,G, a grid file, or an expression in x and y (\"0.01 + 0.02*x\")");
+      spec, "a radius (0.01), boundary:RMIN,RMAX,G, auto:RMAX, a grid file, or an expression in x and y (\"0.01 + 0.02*x\")");
   if (double r = 0; detail::constant_radius(text, r)) return constant_sizing(r);
-  const std::string prefix = "boundary:";
-  if (text.compare(0, prefix.size(), prefix) == 0) {
-    return parse_boundary(text, text.substr(prefix.size()), std::move(domain));
+  for (const std::string prefix : {"boundary:", "auto:"}) {
+    if (text.compare(0, prefix.size(), prefix) != 0) continue;
+    const std::string args = text.substr(prefix.size());
+    return prefix == "auto:" ? parse_feature(text, args, std::move(domain))
+                             : parse_boundary(text, args, std::move(domain));
   }
   std::error_code ec;
   if (std::filesystem::is_regular_file(text, ec)) return grid_sizing(text);
