@@ -125,6 +125,38 @@ TEST(Remesh, GivesExactlyTheVertexCountAsAConflictFreeMaximalPacking) {
   }
 }
 
+// Sharp edges are kept by default (60 degrees, as the command line), none with angle 0:
+// on fandisk the mesh then has edges along its feature curves, and a mesh's vertices on
+// them lie on the input's sharp edges (checked by distance, apart from the library).
+TEST(Remesh, KeepsSharpEdgesUnlessToldNot) {
+  const auto fandisk = test::surface_file("fandisk.off");
+  RemeshOptions options;
+  const RemeshResult kept = remesh(fandisk, 3000, options);
+  ASSERT_TRUE(kept.tuning.reached);
+  EXPECT_GT(kept.mesh.feature_edges.size(), 100u);
+  std::vector<std::array<Vec3, 2>> sharp;
+  for (const MeshEdge& e : test::expected_features(*fandisk, 60))
+    sharp.push_back({fandisk->vertices()[e[0]], fandisk->vertices()[e[1]]});
+  const auto on_sharp_edge = [&](Vec3 p) {
+    for (const auto& [a, b] : sharp) {
+      const double t = std::clamp(dot(p - a, b - a) / squared_norm(b - a), 0.0, 1.0);
+      if (norm(p - (a + (b - a) * t)) <= 1e-9) return true;
+    }
+    return false;
+  };
+  for (const auto& e : kept.mesh.feature_edges) {
+    EXPECT_TRUE(on_sharp_edge(kept.mesh.vertices[e[0]]) && on_sharp_edge(kept.mesh.vertices[e[1]]));
+  }
+  options.feature_angle = 0;
+  const RemeshResult plain = remesh(fandisk, 3000, options);
+  ASSERT_TRUE(plain.tuning.reached);
+  EXPECT_TRUE(plain.mesh.feature_edges.empty());
+  options.feature_angle = 180;
+  EXPECT_THROW(remesh(fandisk, 3000, options), InvalidInput);
+  options.feature_angle = -1;
+  EXPECT_THROW(remesh(fandisk, 3000, options), InvalidInput);
+}
+
 TEST(Remesh, SameSeedSameMeshOtherSeedOtherMesh) {
   const auto sphere = test::surface_file("sphere.off");
   RemeshOptions options;

@@ -22,6 +22,11 @@ struct RemeshOptions {
   /// 0.547) is tuned up to it by injection (or down, below 0.547, by ejection).
   double area_fraction = 0.70;
   std::uint64_t seed = 1;
+  /// Sharp edges to keep: where the surface has no features set (SurfaceDomain::
+  /// set_features), its edges folding by more than this many degrees become feature
+  /// curves with disks on them (detect_features), as the command line's --features does;
+  /// 0 keeps none. A surface with features set keeps its own.
+  double feature_angle = 60;
   /// The tuning's schedule, and a progress callback that can cancel.
   TuneOptions tune;
   /// The memory the job may use, in bytes; 0: what the process may still allocate
@@ -41,8 +46,9 @@ struct RemeshResult {
 
 /// Samples `surface` at the radius for `vertex_count` vertices, tunes the count to
 /// exactly that and meshes the result. Same seed, same mesh. Throws InvalidInput for
-/// fewer than 4 vertices, an area fraction outside (0, 0.9069], or more vertices than
-/// memory can hold; Cancelled when the progress callback cancels.
+/// fewer than 4 vertices, an area fraction outside (0, 0.9069], a feature angle outside
+/// [0, 180), or more vertices than memory can hold; Cancelled when the progress callback
+/// cancels.
 RemeshResult remesh(std::shared_ptr<const SurfaceDomain> surface, std::size_t vertex_count,
                     const RemeshOptions& options = {});
 /// The same on a copy of `surface`.

@@ -8,6 +8,7 @@
 #include "disktune/errors.h"
 #include "disktune/resources.h"
 #include "disktune/restricted_delaunay.h"
+#include "disktune/surface_features.h"
 #include "disktune/surface_tuning.h"
 
 namespace disktune {
@@ -18,6 +19,18 @@ RemeshResult remesh(std::shared_ptr<const SurfaceDomain> surface, std::size_t ve
   if (vertex_count < 4) {
     throw InvalidInput("remesh: a surface mesh needs at least 4 vertices, " + std::to_string(vertex_count) +
                        " asked for");
+  }
+  if (!(options.feature_angle >= 0 && options.feature_angle < 180)) {
+    throw InvalidInput("remesh: the feature angle must be in [0, 180) degrees (0: no features), got " +
+                       std::to_string(options.feature_angle));
+  }
+  const SurfaceFeatures& given = surface->features();
+  if (options.feature_angle > 0 && given.curves.empty() && given.corners.empty()) {
+    auto with_features = std::make_shared<SurfaceDomain>(*surface);
+    FeatureOptions detect;
+    detect.angle = options.feature_angle;
+    with_features->set_features(detect_features(*with_features, detect));
+    surface = std::move(with_features);
   }
   RemeshResult out;
   out.radius = radius_for_count(vertex_count, surface->area(), options.area_fraction);
