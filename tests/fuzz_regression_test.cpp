@@ -47,6 +47,11 @@ TEST(FuzzRegression, PolyDomainFarLongerThanWide) {
   EXPECT_TRUE(domain.contains({0.5, 0.5}));
   EXPECT_FALSE(domain.contains({-1e121, 0.5}));  // (the tolerance is relative to the size)
   EXPECT_NEAR(domain.distance_to_boundary({0.5, 0.5}), 0.5, 1e-12);
+  // Its feature sizing: the corner (0, 0) is 1 from the segments not ending there; the
+  // far end (1, 7.7e121) of the one from there to (0, 1) once made that distance 0.
+  const Sizing sizing = feature_sizing(std::make_shared<const PlanarDomain>(domain), 7.7e119);
+  EXPECT_NEAR(sizing({0, 0}), kFeatureShare * 1, 1e-12);
+  EXPECT_GE(sizing({0.5, 0}), kFeatureShare * 1);  // farther than 1 from (0, 1) and x = 1
 }
 
 // Corners at x = -1e308 and 1e308: the width overflowed, so the segment grid's cell count

@@ -37,10 +37,12 @@ struct SiteCell {
 };
 bool cell_less(const SiteCell& a, const SiteCell& b) { return std::tie(a.i, a.j) < std::tie(b.i, b.j); }
 
+// From the nearer end: a + (b - a) t near b loses b's digits when |a| dwarfs |b|
+// (found by fuzzing: a segment 10^121 long, whose far end gave a distance of 0).
 double segment_distance(Vec2 p, const BoundarySegment& s) {
   const Vec2 ab = s.b - s.a;
   const double t = std::clamp(dot(p - s.a, ab) / squared_norm(ab), 0.0, 1.0);
-  return distance(p, s.a + ab * t);
+  return t <= 0.5 ? distance(p, s.a + ab * t) : distance(p, s.b - ab * (1 - t));
 }
 
 // The segments in the cells of a uniform grid their bounding boxes meet, for nearest
