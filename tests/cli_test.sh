@@ -214,6 +214,7 @@ expect planar-auto-bad 2 "expected auto:RMAX or auto:RMAX,G" -- "$bin" sample --
 # A hole 1e-10 from the outer corner: no feature sizing can hold it; refused, not a hang.
 sed 's/^5 0.3 0.3$/5 1e-10 1e-10/; s/^6 0.7 0.3$/6 0.7 1e-10/; s/^8 0.3 0.7$/8 1e-10 0.7/' hole.poly > touching.poly
 expect planar-auto-too-small 2 "features too small for it \(near \(1e-10, 1e-10\) two boundary parts are 1e-10 apart" -- timeout 60 "$bin" sample --domain touching.poly --radius 0.02 --output z.csv
+expect surface-auto 2 "auto: sizings are for planar domains" -- "$bin" sample --domain "$data/surfaces/eight.off" --sizing auto:0.05 --output z.csv
 expect planar-auto-periodic 2 "feature sizing needs a planar domain" -- "$bin" sample --sizing auto:0.05 --output z.csv
 absent planar-big-radius-output z.csv
 printf 'x,y,r\n0.5,0.5,0.05\n' > inhole.csv

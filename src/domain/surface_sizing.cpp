@@ -191,6 +191,13 @@ SurfaceSizing parse_surface_sizing(const std::string& spec, const SurfaceDomain&
   if (text.compare(0, prefix.size(), prefix) == 0) {
     return parse_curvature(text, text.substr(prefix.size()), domain);
   }
+  for (const std::string planar : {"auto:", "boundary:"}) {
+    if (text.compare(0, planar.size(), planar) == 0) {
+      throw InvalidInput("sizing \"" + text + "\": " + planar +
+                         " sizings are for planar domains; on a surface give a radius, \"curvature\", "
+                         "curvature:RMIN,RMAX, or an expression in x, y and z");
+    }
+  }
   return surface_expression_sizing(domain, text);
 }
 
