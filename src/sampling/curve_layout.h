@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Fixed disks laid out evenly along a stretch of a curve (internal), for every kind of
-// domain: a planar domain's boundary segments and a surface's sharp feature curves.
+// domain: a planar domain's boundary segments and a surface's fixed curves (open
+// boundary loops and sharp feature curves).
 //
 // Why evenly and at most kCurveSpacing r apart: two consecutive fixed disks closer than
 // sqrt(2) r leave no room for another center in their diametral circle (a point at least
