@@ -4,7 +4,11 @@
 // pass near it. A cell that lists none is wholly inside or outside the domain.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "disktune/geometry.h"
@@ -21,7 +25,42 @@ class BoundaryGrid {
   /// is inside. Expected O(1).
   bool contains(Vec2 p) const;
   /// Distance to the nearest segment, searching rings of cells outward.
-  double distance(Vec2 p) const;
+  double distance(Vec2 p) const {
+    return distance(p, std::numeric_limits<double>::infinity(), [](std::size_t) { return false; });
+  }
+  /// The same over the segments `skip(s)` does not reject (s numbers them as the loops
+  /// list them, PlanarDomain::segments' order), and at most `limit`: the search stops
+  /// once no segment nearer than that can be left. Rings of cells around p's cell,
+  /// nearest first; a point outside the grid searches from its clamped cell (distances
+  /// to the grid's cells only grow as the point leaves it).
+  template <class Skip>
+  double distance(Vec2 p, double limit, Skip&& skip) const {
+    if (!(std::isfinite(p.x) && std::isfinite(p.y))) return std::numeric_limits<double>::quiet_NaN();
+    const std::int64_t ci = spec_.column(p.x), cj = spec_.row(p.y);
+    double best2 = limit * limit;
+    auto visit = [&](std::int64_t i, std::int64_t j) {
+      if (i < 0 || i >= spec_.nx || j < 0 || j >= spec_.ny) return;
+      const std::size_t c = cell(i, j);
+      for (std::uint32_t k = start_[c]; k < start_[c + 1]; ++k) {
+        const std::uint32_t s = ids_[k];
+        if (!skip(std::size_t{s})) best2 = std::min(best2, squared_distance_to_segment(p, seg_a_[s], seg_b_[s]));
+      }
+    };
+    const std::int64_t last = std::max({ci, spec_.nx - 1 - ci, cj, spec_.ny - 1 - cj});
+    for (std::int64_t r = free_rings_[cell(ci, cj)]; r <= last; ++r) {
+      const double reach = static_cast<double>(r - 1) * spec_.h;  // nearest a ring-r cell can be
+      if (r > 0 && best2 <= reach * reach) break;
+      if (r == 0) {
+        visit(ci, cj);
+        continue;
+      }
+      for (std::int64_t d = -r; d <= r; ++d) {
+        visit(ci + d, cj - r), visit(ci + d, cj + r);
+        if (d != -r && d != r) visit(ci - r, cj + d), visit(ci + r, cj + d);
+      }
+    }
+    return std::sqrt(best2);
+  }
 
  private:
   std::size_t cell(std::int64_t i, std::int64_t j) const {

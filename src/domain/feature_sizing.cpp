@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "../io/number_text.h"
+#include "boundary_grid.h"
 #include "disktune/errors.h"
 #include "disktune/sizing.h"
 
@@ -37,80 +38,6 @@ struct SiteCell {
 };
 bool cell_less(const SiteCell& a, const SiteCell& b) { return std::tie(a.i, a.j) < std::tie(b.i, b.j); }
 
-// From the nearer end: a + (b - a) t near b loses b's digits when |a| dwarfs |b|
-// (found by fuzzing: a segment 10^121 long, whose far end gave a distance of 0).
-double segment_distance(Vec2 p, const BoundarySegment& s) {
-  const Vec2 ab = s.b - s.a;
-  const double t = std::clamp(dot(p - s.a, ab) / squared_norm(ab), 0.0, 1.0);
-  return t <= 0.5 ? distance(p, s.a + ab * t) : distance(p, s.b - ab * (1 - t));
-}
-
-// The segments in the cells of a uniform grid their bounding boxes meet, for nearest
-// segment searches that skip some segments.
-class SegmentGrid {
- public:
-  explicit SegmentGrid(std::vector<BoundarySegment> segments) : segments_(std::move(segments)) {
-    Vec2 lo{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()}, hi = lo * -1;
-    double total = 0;
-    for (const BoundarySegment& s : segments_) {
-      lo = {std::min({lo.x, s.a.x, s.b.x}), std::min({lo.y, s.a.y, s.b.y})};
-      hi = {std::max({hi.x, s.a.x, s.b.x}), std::max({hi.y, s.a.y, s.b.y})};
-      total += distance(s.a, s.b);
-    }
-    origin_ = lo;
-    cell_ = std::max(total / static_cast<double>(segments_.size()), 1e-9 * std::max(hi.x - lo.x, hi.y - lo.y));
-    for (std::uint32_t k = 0; k < segments_.size(); ++k) {
-      const BoundarySegment& s = segments_[k];
-      const auto [i0, j0] = cell_of({std::min(s.a.x, s.b.x), std::min(s.a.y, s.b.y)});
-      const auto [i1, j1] = cell_of({std::max(s.a.x, s.b.x), std::max(s.a.y, s.b.y)});
-      for (std::int64_t i = i0; i <= i1; ++i)
-        for (std::int64_t j = j0; j <= j1; ++j) entries_.push_back({i, j, k});
-    }
-    std::sort(entries_.begin(), entries_.end());
-    const auto [ni, nj] = cell_of(hi);
-    extent_ = std::max(ni, nj) + 1;
-  }
-
-  const std::vector<BoundarySegment>& segments() const { return segments_; }
-
-  /// The distance from p to the nearest segment `skip` does not reject, if below `limit`
-  /// (else `limit`): rings of cells outward until no nearer segment can be found.
-  template <class Skip>
-  double nearest(Vec2 p, double limit, Skip&& skip) const {
-    const auto [ci, cj] = cell_of(p);
-    double best = limit;
-    for (std::int64_t ring = 0; (static_cast<double>(ring) - 1) * cell_ < best; ++ring) {
-      for (std::int64_t i = ci - ring; i <= ci + ring; ++i)
-        for (std::int64_t j = cj - ring; j <= cj + ring; ++j) {
-          if (std::max(std::abs(i - ci), std::abs(j - cj)) != ring) continue;
-          const auto range = std::equal_range(entries_.begin(), entries_.end(), Entry{i, j, 0}, same_cell);
-          for (auto e = range.first; e != range.second; ++e)
-            if (!skip(segments_[e->segment])) best = std::min(best, segment_distance(p, segments_[e->segment]));
-        }
-      if (ring > extent_) break;  // every cell seen
-    }
-    return best;
-  }
-
- private:
-  struct Entry {
-    std::int64_t i, j;
-    std::uint32_t segment;
-    bool operator<(const Entry& o) const { return std::tie(i, j, segment) < std::tie(o.i, o.j, o.segment); }
-  };
-  static bool same_cell(const Entry& a, const Entry& b) { return std::tie(a.i, a.j) < std::tie(b.i, b.j); }
-  std::pair<std::int64_t, std::int64_t> cell_of(Vec2 p) const {
-    return {static_cast<std::int64_t>(std::floor((p.x - origin_.x) / cell_)),
-            static_cast<std::int64_t>(std::floor((p.y - origin_.y) / cell_))};
-  }
-
-  std::vector<BoundarySegment> segments_;
-  Vec2 origin_;
-  double cell_ = 1;
-  std::int64_t extent_ = 0;  // rings around a cell of the box that cover the whole box
-  std::vector<Entry> entries_;
-};
-
 // The most sites a feature sizing lays down (about a million boundary disks' worth):
 // past it a feature is too small for the r_max asked, and laying down more would only
 // take long before the job is refused for its size.
@@ -121,7 +48,8 @@ constexpr std::size_t kMaxSites = 4'000'000;
 // segment jumps: lfs changes at most as fast as the walk goes (its own and next segments
 // stay left out), so no site is needed before lfs could fall below `reach`.
 std::vector<Site> feature_sites(const PlanarDomain& domain, double r_max) {
-  const SegmentGrid grid(domain.segments());
+  const detail::BoundaryGrid grid(domain.loops(), domain.frame().origin, domain.frame().origin + domain.frame().extent);
+  const std::vector<BoundarySegment> segments = domain.segments();  // the grid's numbering
   const double reach = r_max / kFeatureShare;  // a point at least this far from every other part is no site
   const auto& loops = domain.loops();
   auto next_to = [&](const BoundarySegment& s, const BoundarySegment& o) {
@@ -145,14 +73,14 @@ std::vector<Site> feature_sites(const PlanarDomain& domain, double r_max) {
   };
   for (const auto& loop : loops)
     for (const Vec2 v : loop) {
-      const double lfs = grid.nearest(v, reach, [&](const BoundarySegment& o) { return o.a == v || o.b == v; });
+      const double lfs = grid.distance(v, reach, [&](std::size_t o) { return segments[o].a == v || segments[o].b == v; });
       if (lfs < reach) add(v, lfs);
     }
-  for (const BoundarySegment& s : grid.segments()) {
+  for (const BoundarySegment& s : segments) {
     const double len = distance(s.a, s.b);
     for (double t = 0; t < len;) {
       const Vec2 p = s.a + (s.b - s.a) * (t / len);
-      const double lfs = grid.nearest(p, 8 * reach, [&](const BoundarySegment& o) { return next_to(s, o); });
+      const double lfs = grid.distance(p, 8 * reach, [&](std::size_t o) { return next_to(s, segments[o]); });
       if (lfs < reach) add(p, lfs);
       t += std::max({0.25 * kFeatureShare * std::min(lfs, reach), lfs - reach, 1e-9 * len});
     }

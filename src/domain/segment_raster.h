@@ -53,12 +53,14 @@ void for_cells_of_segment(const CellSpec& g, Vec2 a, Vec2 b, double pad, Visit&&
   }
 }
 
-/// Squared distance from p to the closed segment ab.
+/// Squared distance from p to the closed segment ab, measured from the nearer end:
+/// a + (b - a) t near b loses b's digits when |a| dwarfs |b| (fuzzing found a segment
+/// 10^121 long whose far end gave a distance of 0).
 inline double squared_distance_to_segment(Vec2 p, Vec2 a, Vec2 b) {
   const Vec2 ab = b - a, ap = p - a;
   const double len2 = squared_norm(ab);
   const double t = len2 > 0 ? std::clamp(dot(ap, ab) / len2, 0.0, 1.0) : 0.0;
-  return squared_norm(ap - ab * t);
+  return t <= 0.5 ? squared_norm(ap - ab * t) : squared_norm((p - b) + ab * (1 - t));
 }
 
 }  // namespace disktune::detail
