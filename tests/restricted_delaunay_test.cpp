@@ -170,6 +170,12 @@ TEST(RestrictedDelaunay, RefusesTooFewOrNonFiniteSamples) {
             std::string::npos);
   const std::vector<Vec3> line = {{0, 0, 0}, {0, 0, 1}, {0, 0, 2}, {0, 0, 3}};
   EXPECT_THROW(restricted_delaunay(line, sphere), InvalidInput);
+  // Feature edges must join two different samples.
+  const std::vector<Vec3> four = {{0, 0, 0.5}, {0, 0.5, 0}, {0.5, 0, 0}, {0, 0, -0.5}};
+  const std::vector<std::uint32_t> any(4, kAnyPatch);
+  EXPECT_NE(message_of([&] { restricted_delaunay(four, sphere, any, {{0, 4}}); }).find("feature edge 0-4"),
+            std::string::npos);
+  EXPECT_THROW(restricted_delaunay(four, sphere, any, {{2, 2}}), InvalidInput);
 }
 
 TEST(RestrictedDelaunay, HausdorffIsZeroForTheSurfaceItselfAndSeesAScaling) {

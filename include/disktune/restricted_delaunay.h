@@ -4,6 +4,7 @@
 // that surface. CGAL stays in src/mesh/restricted_delaunay.cpp.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -30,15 +31,20 @@ SurfaceMesh restricted_delaunay(const std::vector<Vec3>& samples, const SurfaceD
 constexpr std::uint32_t kAnyPatch = ~std::uint32_t{0};
 
 /// The same on a surface with sharp features, each sample's patch given
-/// (SurfaceDomain::triangle_patch, or kAnyPatch): a triangle whose vertices lie in two
-/// different patches, joining the two sides of a feature, is dropped where it shares an
-/// edge with two or more others (near a sharp crease such triangles close a tetrahedron
-/// over it; where feature disks are too far apart for an edge between them, the mesh
-/// needs them and they stay).
+/// (SurfaceDomain::triangle_patch, or kAnyPatch), and the pairs of samples consecutive
+/// along a feature curve. Near a sharp crease the dual test can keep, around a sample x
+/// beside a feature edge ab, the triangle abx and two fans from a to b, one of them
+/// across the crease (ax and bx in three triangles, ab in one; three faces of a
+/// tetrahedron in the simplest case): the fan bent further from abx gives way to a cap
+/// over its rim, which holds the feature edge. A triangle whose vertices lie in two different patches, joining the
+/// two sides of a feature, is dropped where it shares an edge with two or more others
+/// (where feature disks are too far apart for an edge between them, the mesh needs such
+/// triangles and they stay).
 /// Throws as above, and InvalidInput unless there is one patch per sample, each a patch
-/// of the surface or kAnyPatch.
+/// of the surface or kAnyPatch, and each feature edge joins two different samples.
 SurfaceMesh restricted_delaunay(const std::vector<Vec3>& samples, const SurfaceDomain& surface,
-                                const std::vector<std::uint32_t>& sample_patch);
+                                const std::vector<std::uint32_t>& sample_patch,
+                                const std::vector<std::array<std::uint32_t, 2>>& feature_edges = {});
 
 /// The mesh of a packing: vertex i is the i-th live disk (packing.ids() order); a fixed
 /// disk (on a feature curve or the open boundary) belongs to every patch, any other to

@@ -124,6 +124,11 @@ double farthest(const std::vector<Point>& points, const Tree& tree) {
   return std::sqrt(d2);
 }
 
+/// An undirected edge as a map key.
+std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) {
+  return a < b ? std::uint64_t{a} << 32 | b : std::uint64_t{b} << 32 | a;
+}
+
 /// Removes the triangles that join two sides of a feature (vertices in two different
 /// patches) and share an edge with two or more other triangles. Near a sharp crease a
 /// dual edge can cross it, so the triangles on either side close a tetrahedron over the
@@ -139,25 +144,116 @@ void drop_crossings(SurfaceMesh& mesh, const std::vector<std::uint32_t>& sample_
     }
     return false;
   };
-  const auto key = [](std::uint32_t a, std::uint32_t b) {
-    return a < b ? std::uint64_t{a} << 32 | b : std::uint64_t{b} << 32 | a;
-  };
   std::map<std::uint64_t, int> uses;
   for (const auto& t : mesh.triangles)
-    for (int k = 0; k < 3; ++k) ++uses[key(t[k], t[(k + 1) % 3])];
+    for (int k = 0; k < 3; ++k) ++uses[edge_key(t[k], t[(k + 1) % 3])];
   const auto extra = [&](const std::array<std::uint32_t, 3>& t) {
     if (!crosses(t)) return false;
     for (int k = 0; k < 3; ++k)
-      if (uses[key(t[k], t[(k + 1) % 3])] > 2) return true;
+      if (uses[edge_key(t[k], t[(k + 1) % 3])] > 2) return true;
     return false;
   };
   mesh.triangles.erase(std::remove_if(mesh.triangles.begin(), mesh.triangles.end(), extra), mesh.triangles.end());
 }
 
+/// The fan of triangles around x from a to b that starts with `first` (which holds a
+/// and x): the triangles in order and the rim a, y1, .., yk, b. Empty if the walk meets
+/// an edge xy not in exactly two triangles, or does not reach b within a few steps.
+struct Fan {
+  std::vector<std::size_t> triangles;
+  std::vector<std::uint32_t> rim;
+};
+
+/// A sample x beside a feature edge ab can have a Voronoi cell reaching over a sharp
+/// crease. The dual test then keeps abx and two fans of triangles around x from a to b:
+/// one on x's side, one across the crease (x y1 .. yk, k >= 1; for k = 1 three faces of
+/// the tetrahedron abxy). ax and bx lie in three triangles, ab in one. The fan across
+/// the crease (the one bent further from abx) gives way to a cap over its rim a y1 .. yk
+/// b, triangles from a, which holds ab: every edge is then in two triangles, x keeps one
+/// fan, and the feature edge stays. Nothing changes unless the cap's diagonals are new
+/// edges. One fan at a time, the edge map rebuilt after each (they are rare).
+void cap_fans_across_creases(SurfaceMesh& mesh, const std::vector<std::array<std::uint32_t, 2>>& feature_edges) {
+  using Tri = std::array<std::uint32_t, 3>;
+  const auto third = [](const Tri& t, std::uint32_t p, std::uint32_t q) {
+    for (const std::uint32_t v : t)
+      if (v != p && v != q) return v;
+    return p;
+  };
+  const auto unit_normal = [&](const Tri& t) {
+    const Vec3 n = normal(mesh.vertices, t);
+    const double len = norm(n);
+    return len > 0 ? n * (1 / len) : n;
+  };
+  for (bool changed = true; changed;) {
+    changed = false;
+    std::map<std::uint64_t, std::vector<std::size_t>> with_edge;  // triangles by edge
+    for (std::size_t i = 0; i < mesh.triangles.size(); ++i)
+      for (int k = 0; k < 3; ++k) with_edge[edge_key(mesh.triangles[i][k], mesh.triangles[i][(k + 1) % 3])].push_back(i);
+    const auto on = [&](std::uint32_t p, std::uint32_t q) {
+      const auto it = with_edge.find(edge_key(p, q));
+      return it == with_edge.end() ? std::vector<std::size_t>{} : it->second;
+    };
+    for (const auto& [a, b] : feature_edges) {
+      const auto on_ab = on(a, b);
+      if (on_ab.size() != 1) continue;
+      const Tri abx = mesh.triangles[on_ab[0]];
+      const std::uint32_t x = third(abx, a, b);
+      if (on(a, x).size() != 3 || on(b, x).size() != 3) continue;
+      const auto walk = [&](std::size_t first) {
+        Fan fan{{}, {a}};
+        for (std::size_t t = first; fan.triangles.size() < 16;) {
+          const std::uint32_t y = third(mesh.triangles[t], x, fan.rim.back());
+          fan.triangles.push_back(t);
+          fan.rim.push_back(y);
+          if (y == b) return fan;
+          const auto on_xy = on(x, y);
+          if (on_xy.size() != 2) break;
+          t = on_xy[0] == t ? on_xy[1] : on_xy[0];
+        }
+        return Fan{};
+      };
+      std::vector<Fan> fans;
+      for (const std::size_t t : on(a, x))
+        if (t != on_ab[0]) fans.push_back(walk(t));
+      if (fans[0].rim.empty() || fans[1].rim.empty()) continue;
+      // How far a fan bends away from abx: the least cosine between their normals.
+      const auto bend = [&](const Fan& f) {
+        double least = 1;
+        for (const std::size_t t : f.triangles) least = std::min(least, dot(unit_normal(mesh.triangles[t]), unit_normal(abx)));
+        return least;
+      };
+      const Fan& across = bend(fans[0]) < bend(fans[1]) ? fans[0] : fans[1];
+      const auto& rim = across.rim;
+      bool fresh = true;  // the cap's diagonals a-yi (i >= 2) are no edges yet
+      for (std::size_t i = 2; i + 1 < rim.size(); ++i) fresh &= on(a, rim[i]).empty();
+      if (!fresh) continue;
+      // Cap triangle i holds rim edge yi yi+1, run the way fan triangle i runs it.
+      std::vector<Tri> cap;
+      for (std::size_t i = 1; i + 1 < rim.size(); ++i) {
+        const Tri& t = mesh.triangles[across.triangles[i]];
+        const int at = static_cast<int>(std::find(t.begin(), t.end(), rim[i]) - t.begin());
+        cap.push_back(t[(at + 1) % 3] == rim[i + 1] ? Tri{a, rim[i], rim[i + 1]} : Tri{a, rim[i + 1], rim[i]});
+      }
+      std::vector<bool> gone(mesh.triangles.size(), false);
+      for (const std::size_t t : across.triangles) gone[t] = true;
+      std::size_t kept = 0;
+      for (std::size_t i = 0; i < mesh.triangles.size(); ++i)
+        if (!gone[i]) mesh.triangles[kept++] = mesh.triangles[i];
+      mesh.triangles.resize(kept);
+      for (Tri t : cap) {
+        std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+        mesh.triangles.push_back(t);
+      }
+      changed = true;
+      break;
+    }
+  }
+}
+
 }  // namespace
 
 SurfaceMesh restricted_delaunay(const std::vector<Vec3>& samples, const SurfaceDomain& surface) {
-  return restricted_delaunay(samples, surface, std::vector<std::uint32_t>(samples.size(), kAnyPatch));
+  return restricted_delaunay(samples, surface, std::vector<std::uint32_t>(samples.size(), kAnyPatch), {});
 }
 
 SurfaceMesh restricted_delaunay(const SurfacePacking& packing) {
@@ -168,18 +264,20 @@ SurfaceMesh restricted_delaunay(const SurfacePacking& packing) {
     patch.push_back((packing.flags(id) & kFixed) ? kAnyPatch
                                                  : packing.domain().triangle_patch()[packing.point(id).triangle]);
   }
-  SurfaceMesh mesh = restricted_delaunay(samples, packing.domain(), patch);
+  const auto along_features = detail::feature_neighbours(packing);
+  SurfaceMesh mesh = restricted_delaunay(samples, packing.domain(), patch, along_features);
   // The feature curves' consecutive disks that the mesh joins.
   std::set<std::pair<std::uint32_t, std::uint32_t>> edges;
   for (const auto& t : mesh.triangles)
     for (int k = 0; k < 3; ++k) edges.insert(std::minmax(t[k], t[(k + 1) % 3]));
-  for (const auto& e : detail::feature_neighbours(packing))
+  for (const auto& e : along_features)
     if (edges.count(std::minmax(e[0], e[1]))) mesh.feature_edges.push_back(e);
   return mesh;
 }
 
 SurfaceMesh restricted_delaunay(const std::vector<Vec3>& samples, const SurfaceDomain& surface,
-                                const std::vector<std::uint32_t>& sample_patch) {
+                                const std::vector<std::uint32_t>& sample_patch,
+                                const std::vector<std::array<std::uint32_t, 2>>& feature_edges) {
   check_samples(samples);
   if (sample_patch.size() != samples.size()) {
     throw InvalidInput("restricted_delaunay: " + std::to_string(sample_patch.size()) + " patches for " +
@@ -189,6 +287,12 @@ SurfaceMesh restricted_delaunay(const std::vector<Vec3>& samples, const SurfaceD
     if (p != kAnyPatch && p >= surface.patch_count()) {
       throw InvalidInput("restricted_delaunay: patch " + std::to_string(p) + " of a sample, but the surface has " +
                          std::to_string(surface.patch_count()) + "; give SurfaceDomain::triangle_patch values");
+    }
+  }
+  for (const auto& [a, b] : feature_edges) {
+    if (a >= samples.size() || b >= samples.size() || a == b) {
+      throw InvalidInput("restricted_delaunay: feature edge " + std::to_string(a) + "-" + std::to_string(b) +
+                         " is not a pair of two of the " + std::to_string(samples.size()) + " samples");
     }
   }
   const auto distinct = distinct_samples(samples);
@@ -268,6 +372,7 @@ SurfaceMesh restricted_delaunay(const std::vector<Vec3>& samples, const SurfaceD
       keep_if_hit(*f, Exact::Ray_3(center.at(c), out));
     }
   }
+  cap_fans_across_creases(mesh, feature_edges);
   drop_crossings(mesh, sample_patch);
   // Deterministic order whatever CGAL's internal one: by the triangles' vertex indices.
   std::sort(mesh.triangles.begin(), mesh.triangles.end());
