@@ -363,6 +363,58 @@ TEST(FeatureMeshing, TheElephantsSampleIsAManifoldWhereATetrahedronClosesOverACr
   EXPECT_TRUE(has_topology(p, want, "elephant seed 88"));
 }
 
+// An open boundary's sharp turns are corners, as a planar domain's polygon vertices are:
+// each holds a fixed disk, and the pieces between them are laid out evenly, so that
+// along the whole loop consecutive boundary disks are less than sqrt(2) r apart. (Before,
+// mesh_with_border's one loop, a square with four turns near 90 degrees, had no corner;
+// its layout from a random point failed whole at a turn, and 1D darts left 213-239
+// boundary disks by seed with steps up to 2 r.) The turns, the order along the loop and
+// the steps are found here by plain geometry.
+TEST(FeatureSampling, OpenBoundaryTurnsAreCornersAndItsDisksCloseTogether) {
+  const auto d = test::surface_file("mesh_with_border.off");
+  const auto& v = d->vertices();
+  ASSERT_EQ(d->boundary_loops().size(), 1u);
+  const auto& loop = d->boundary_loops()[0];
+  std::vector<std::size_t> turns;  // loop vertices where the boundary turns by > 60 degrees
+  std::vector<double> at{0};       // arc length at each loop vertex, and the whole length
+  for (std::size_t k = 0; k < loop.size(); ++k) {
+    const Vec3 in = v[loop[k]] - v[loop[(k + loop.size() - 1) % loop.size()]], out = v[loop[(k + 1) % loop.size()]] - v[loop[k]];
+    if (dot(in, out) < 0.5 * norm(in) * norm(out)) turns.push_back(loop[k]);
+    at.push_back(at.back() + norm(out));
+  }
+  ASSERT_EQ(turns.size(), 4u);
+  std::sort(turns.begin(), turns.end());
+  EXPECT_EQ(d->corners(), turns);
+  const double r = 0.2676;
+  for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+    Rng rng(seed);
+    const SurfacePacking p = sample_mps(d, SurfaceSizing::constant(r), rng);
+    EXPECT_SURFACE_OK(p);
+    std::vector<double> s;  // arc length of each disk on the loop
+    for (const DiskId id : p.ids()) {
+      for (std::size_t k = 0; k < loop.size(); ++k) {
+        const Vec3 a = v[loop[k]], b = v[loop[(k + 1) % loop.size()]];
+        if (segment_distance(p.center(id), a, b) > 1e-9 * r) continue;
+        EXPECT_TRUE(p.flags(id) & kFixed) << "seed " << seed;
+        s.push_back(at[k] + norm(p.center(id) - a));
+        break;
+      }
+    }
+    for (const std::size_t c : turns) {
+      std::size_t held = 0;
+      for (const DiskId id : p.ids()) held += norm(p.center(id) - v[c]) <= 1e-12 * r;
+      EXPECT_EQ(held, 1u) << "seed " << seed << ": corner " << c;
+    }
+    std::sort(s.begin(), s.end());
+    ASSERT_GE(s.size(), 4u);
+    double widest = s.front() + at.back() - s.back();  // the step across the loop's start
+    for (std::size_t i = 1; i < s.size(); ++i) widest = std::max(widest, s[i] - s[i - 1]);
+    EXPECT_LT(widest, std::sqrt(2.0) * r) << "seed " << seed << ": " << s.size() << " disks on the loop";
+    std::printf("[ features ] mesh_with_border seed %d: %zu disks on the boundary, widest step %.3f r (arc)\n",
+                static_cast<int>(seed), s.size(), widest / r);
+  }
+}
+
 TEST(TopologyOracle, TellsManifoldsFromTheRest) {
   // A tetrahedron: closed, genus 0; without one face: one boundary loop, still genus 0.
   std::vector<std::array<std::size_t, 3>> tet{{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}};

@@ -36,6 +36,11 @@ struct SurfaceFeatures {
   std::vector<SurfaceCurve> curves;   // every feature edge in exactly one curve
 };
 
+/// An open boundary turning by more than this many degrees at a vertex (the angle
+/// between the directions of its two edges) has a corner there: a fixed disk, as every
+/// polygon vertex of a planar domain has, which the boundary's even layout starts from.
+constexpr double kBoundaryCornerAngle = 60;
+
 class SurfaceDomain {
  public:
   using Triangle = std::array<std::size_t, 3>;
@@ -70,9 +75,12 @@ class SurfaceDomain {
   /// feature edge, or (open) does not end at corners. Replaces earlier features.
   void set_features(SurfaceFeatures features);
   const SurfaceFeatures& features() const { return features_; }
+  /// The vertices that hold a fixed disk each (sorted): the feature corners, and the
+  /// vertices where an open boundary turns by more than kBoundaryCornerAngle.
+  const std::vector<std::size_t>& corners() const { return corners_; }
   /// The curves that hold fixed disks (paper, section 7): every open boundary loop, cut
-  /// into open curves at the feature corners on it (a loop with none stays closed), then
-  /// every feature curve. Corners (features().corners) are the ends of the open ones.
+  /// into open curves at the corners on it (a loop with none stays closed), then every
+  /// feature curve. Corners are the ends of the open ones.
   const std::vector<SurfaceCurve>& fixed_curves() const { return curves_; }
   /// The index in fixed_curves() of the first feature curve (the boundary pieces come first).
   std::size_t first_feature_curve() const { return curves_.size() - features_.curves.size(); }
@@ -92,6 +100,7 @@ class SurfaceDomain {
   std::size_t edge_count_ = 0;
   std::vector<std::vector<std::size_t>> loops_;
   SurfaceFeatures features_;
+  std::vector<std::size_t> corners_;
   std::vector<SurfaceCurve> curves_;
   std::vector<std::uint32_t> patch_;
   std::size_t patch_count_ = 0;

@@ -3,6 +3,7 @@
 #include "disktune/surface_domain.h"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <numeric>
 
@@ -182,6 +183,18 @@ void SurfaceDomain::set_features(SurfaceFeatures features) {
     if (v >= n) throw InvalidInput("feature corner " + std::to_string(v) + " names a missing vertex");
     corner[v] = 1;
   }
+  // Where an open boundary turns sharply, as at a planar domain's polygon vertices: a corner.
+  const double straight = std::cos(kBoundaryCornerAngle * 3.14159265358979323846 / 180);
+  for (const auto& loop : loops_) {
+    for (std::size_t k = 0; k < loop.size(); ++k) {
+      const Vec3 in = vertices_[loop[k]] - vertices_[loop[(k + loop.size() - 1) % loop.size()]],
+                 out = vertices_[loop[(k + 1) % loop.size()]] - vertices_[loop[k]];
+      if (dot(in, out) < straight * norm(in) * norm(out)) corner[loop[k]] = 1;
+    }
+  }
+  corners_.clear();
+  for (std::size_t v = 0; v < n; ++v)
+    if (corner[v]) corners_.push_back(v);
   for (std::size_t c = 0; c < features.curves.size(); ++c) {
     const SurfaceCurve& curve = features.curves[c];
     const auto bad = [&](const std::string& why) {

@@ -57,15 +57,15 @@ class LengthTree {
   }
 };
 
-// A fixed disk on each feature corner that no earlier one covers (two corners closer
-// than r share one disk), in vertex order.
+// A fixed disk on each corner (features' and the boundary's) that no earlier one covers
+// (two corners closer than r share one disk), in vertex order.
 void sample_corners(SurfacePacking& packing) {
   const SurfaceDomain& d = packing.domain();
-  if (d.features().corners.empty()) return;
+  if (d.corners().empty()) return;
   std::vector<std::uint32_t> triangle_at(d.vertices().size());
   for (std::size_t t = 0; t < d.triangles().size(); ++t)
     for (const std::size_t v : d.triangles()[t]) triangle_at[v] = static_cast<std::uint32_t>(t);
-  for (const std::size_t v : d.features().corners)
+  for (const std::size_t v : d.corners())
     if (!packing.covered(d.vertices()[v])) packing.insert({d.vertices()[v], triangle_at[v]}, kFixed);
 }
 

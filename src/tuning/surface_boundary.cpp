@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // 1D tuning of a surface's fixed curves (paper, section 7): the surface adapter of the
-// curve tuning core (curve_tuning.h). A boundary loop with no feature corner on it is a
-// closed curve with no pinned disk: surface sampling puts no disk on the loop's
-// vertices, so a sharp vertex is an ordinary point of the curve, and what happens across
-// it (two stretches of the loop close in space) is seen by the core's chord-distance
-// checks. Every other curve runs between two corner disks, which stay.
+// curve tuning core (curve_tuning.h). A boundary loop with no corner on it (no feature
+// corner, no turn sharper than kBoundaryCornerAngle) is a closed curve with no pinned
+// disk: a bend is an ordinary point of the curve, and what happens across it (two
+// stretches of the loop close in space) is seen by the core's chord-distance checks.
+// Every other curve runs between two corner disks, which stay.
 //
 // Feature curves are never spaced wider than kCurveSpacing r, below the sqrt(2) r
 // that keeps the edge between consecutive feature disks in the restricted Delaunay mesh
