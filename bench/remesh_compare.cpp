@@ -11,6 +11,11 @@
 //                   features, and no protected CGAL row
 //     --seed        disktune's seed (default 1)
 //     --iterations  CGAL's number_of_iterations (default 10)
+//
+// Given a planar domain (.poly) instead, the peer is CGAL's Mesh_2 refinement and Lloyd
+// optimizer (cvt_reference_mesh, at most --iterations Lloyd iterations, default 100),
+// and disktune samples at the radius whose packing of N disks has eta 0.70 (as remesh
+// does on a surface), injects to exactly N and takes the constrained Delaunay mesh.
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
 #include <CGAL/Polygon_mesh_processing/detect_features.h>
@@ -31,7 +36,13 @@
 #include <string>
 #include <vector>
 
+#include "disktune/boundary.h"
+#include "disktune/cvt_reference.h"
 #include "disktune/errors.h"
+#include "disktune/mesh.h"
+#include "disktune/planar_domain.h"
+#include "disktune/sampling.h"
+#include "disktune/tuning.h"
 #include "disktune/quality.h"
 #include "disktune/remesh.h"
 #include "disktune/restricted_delaunay.h"
@@ -52,11 +63,11 @@ struct Args {
   std::size_t vertices = 0;
   std::optional<double> feature_angle = 60;  // nullopt: --features none
   std::uint64_t seed = 1;
-  unsigned iterations = 10;
+  std::optional<unsigned> iterations;  // CGAL's: 10 remeshing, 100 Lloyd iterations unless given
 };
 
 const char* const kUsage =
-    "usage: disktune-remesh-compare SURFACE.off --vertices N [--features ANGLE|none] [--seed S] "
+    "usage: disktune-remesh-compare SURFACE.off|DOMAIN.poly --vertices N [--features ANGLE|none] [--seed S] "
     "[--iterations K]\n";
 
 [[noreturn]] void bad_args(const std::string& why) {
@@ -225,11 +236,61 @@ void print_row(const Row& row, const disktune::SurfaceDomain& surface, double ra
   if (!check.problems.empty()) std::fprintf(stderr, "%s: %s\n", row.tool.c_str(), check.problems.c_str());
 }
 
+void print_planar_row(const std::string& tool, const disktune::PlanarMesh& mesh, double radius, double seconds) {
+  const disktune::PlanarMeshQuality q = disktune::measure_planar_mesh(mesh, radius);
+  std::printf("| %s | %zu | %.2f | %.2f | %.4f | %.4f | %.3f | %.3f |\n", tool.c_str(), mesh.vertices.size(),
+              q.angles.min, q.angles.max, q.angles.fraction_50_70, q.angles.fraction_obtuse_triangles,
+              q.local_beta.max, seconds);
+}
+
+// The planar comparison (see the top of the file).
+int compare_planar(const Args& args) {
+  const disktune::PlanarDomain domain = disktune::read_poly(args.path);
+  const auto shared = std::make_shared<const disktune::PlanarDomain>(domain);
+  const double eta = 0.70, n = static_cast<double>(args.vertices);
+  const double radius = std::sqrt(4 * eta * domain.area() / (n * 3.14159265358979323846));
+  if (!domain.corners_fit(radius)) {
+    std::fprintf(stderr, "disktune-remesh-compare: r = %g (eta 0.70 at %zu disks) is too large for the corners of %s; "
+                 "ask for more vertices\n", radius, args.vertices, args.path.c_str());
+    return 1;
+  }
+  const auto t0 = Clock::now();
+  disktune::Rng rng(args.seed);
+  disktune::Packing packing = disktune::sample_mps(shared, radius, rng);
+  const std::size_t sampled = packing.size();
+  const disktune::TuneResult tuned = disktune::tune(packing, *shared, disktune::Target::count(args.vertices), rng);
+  const disktune::PlanarMesh ours =
+      disktune::constrained_delaunay(packing, disktune::boundary_loops(packing, *shared));
+  const double our_seconds = since(t0);
+  const unsigned lloyd = args.iterations.value_or(100);
+  const auto t1 = Clock::now();
+  const disktune::CvtReference cgal = disktune::cvt_reference_mesh(domain, args.vertices, static_cast<int>(lloyd));
+  const double cgal_seconds = since(t1);
+
+  std::printf("%s: %zu loops, area %.6g; target %zu vertices; r = %.6g (MPS %zu disks, %s); seed %llu; "
+              "Lloyd iterations at most %u\n\n",
+              args.path.c_str(), domain.loops().size(), domain.area(), args.vertices, radius, sampled,
+              tuned.reached ? "count reached" : "count NOT reached", static_cast<unsigned long long>(args.seed),
+              lloyd);
+  std::printf("| tool | vertices | min angle | max angle | angles in [50,70] | obtuse triangles | local beta max "
+              "| time (s) |\n");
+  std::printf("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n");
+  print_planar_row("disktune sample + tune + constrained Delaunay", ours, radius, our_seconds);
+  print_planar_row("CGAL Mesh_2 + Lloyd", cgal.mesh, radius, cgal_seconds);
+  std::printf("\nNotes:\n- Times are wall clock, reading excluded; CGAL's includes its size calibration "
+              "(refinement %.3f s for the kept one, Lloyd %.3f s).\n- Angle fractions are of all triangle "
+              "angles; obtuse is the fraction of triangles; local beta over vertices off the boundary, lengths "
+              "in units of disktune's r.\n",
+              cgal.refine_seconds, cgal.lloyd_seconds);
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   const Args args = parse_args(argc, argv);
   try {
+    if (args.path.size() > 5 && args.path.compare(args.path.size() - 5, 5, ".poly") == 0) return compare_planar(args);
     const disktune::SurfaceDomain surface = disktune::read_surface(args.path);
     CgalMesh cgal_input;
     if (!PMP::IO::read_polygon_mesh(args.path, cgal_input) || !CGAL::is_triangle_mesh(cgal_input)) {
@@ -252,10 +313,10 @@ int main(int argc, char** argv) {
                                                     : "count NOT reached: " + std::to_string(result.tuning.count);
     rows.push_back({"disktune remesh", {std::move(result.mesh), disktune_seconds, tuned}});
 
-    rows.push_back({"CGAL isotropic_remeshing", cgal_remesh(cgal_input, args.vertices, std::nullopt, args.iterations)});
+    rows.push_back({"CGAL isotropic_remeshing", cgal_remesh(cgal_input, args.vertices, std::nullopt, args.iterations.value_or(10))});
     if (args.feature_angle) {
       rows.push_back({"CGAL isotropic_remeshing, sharp edges protected",
-                      cgal_remesh(cgal_input, args.vertices, args.feature_angle, args.iterations)});
+                      cgal_remesh(cgal_input, args.vertices, args.feature_angle, args.iterations.value_or(10))});
     }
 
     char features[64] = "none";
@@ -267,7 +328,7 @@ int main(int argc, char** argv) {
                 "CGAL iterations %u\n\n",
                 args.path.c_str(), surface.vertices().size(), surface.triangles().size(), surface.genus(),
                 surface.is_closed() ? "closed" : "open", args.vertices, features,
-                static_cast<unsigned long long>(args.seed), args.iterations);
+                static_cast<unsigned long long>(args.seed), args.iterations.value_or(10));
     std::printf("| tool | vertices | min angle | max angle | angles in [50,70] | obtuse triangles "
                 "| Hausdorff / bbox diagonal | manifold / genus | time (s) |\n");
     std::printf("| --- | ---: | ---: | ---: | ---: | ---: | ---: | --- | ---: |\n");

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include "disktune/geometry.h"
 #include "disktune/mesh.h"
+#include "disktune/planar_domain.h"
 
 namespace disktune {
 
@@ -23,5 +24,10 @@ struct CvtReference {
 /// iterations. The vertex count is close to `count`, not equal: read it off the mesh.
 /// Throws InvalidInput for an empty rectangle, count < 8 or max_iterations < 1.
 CvtReference cvt_reference_mesh(Vec2 extent, std::size_t count, int max_iterations = 100);
+
+/// The same over a planar domain: its loops as constraints, its holes left out, the
+/// size bound calibrated to the domain's area (what a user with Triangle or CGAL would
+/// make of a .poly instead). Throws InvalidInput for count < 8 or max_iterations < 1.
+CvtReference cvt_reference_mesh(const PlanarDomain& domain, std::size_t count, int max_iterations = 100);
 
 }  // namespace disktune

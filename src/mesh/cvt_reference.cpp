@@ -14,8 +14,11 @@
 #include <cmath>
 #include <map>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "disktune/errors.h"
+#include "disktune/planar_domain.h"
 
 namespace disktune {
 namespace {
@@ -31,12 +34,36 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-/// The rectangle's boundary as constraints, refined with edges at most `size` long.
-void refine_rectangle(Cdt& cdt, Vec2 extent, double size) {
+/// Constraints along every loop, refined with edges at most `size` long; Mesh_2 leaves
+/// the regions of the seeds (points in the holes) unmeshed.
+void refine_loops(Cdt& cdt, const std::vector<std::vector<Vec2>>& loops, const std::vector<K::Point_2>& seeds,
+                  double size) {
   cdt.clear();
-  const K::Point_2 c[4] = {{0, 0}, {extent.x, 0}, {extent.x, extent.y}, {0, extent.y}};
-  for (int k = 0; k < 4; ++k) cdt.insert_constraint(c[k], c[(k + 1) % 4]);
-  CGAL::refine_Delaunay_mesh_2(cdt, Criteria(0.125, size));
+  for (const auto& loop : loops)
+    for (std::size_t k = 0; k < loop.size(); ++k) {
+      const Vec2 a = loop[k], b = loop[(k + 1) % loop.size()];
+      cdt.insert_constraint(K::Point_2(a.x, a.y), K::Point_2(b.x, b.y));
+    }
+  CGAL::refine_Delaunay_mesh_2(cdt, seeds.begin(), seeds.end(), Criteria(0.125, size));
+}
+
+/// A point inside each hole: the centroids of the faces of the loops' constrained
+/// triangulation that the domain does not contain.
+std::vector<K::Point_2> hole_seeds(const PlanarDomain& domain) {
+  Cdt cdt;
+  for (std::size_t l = 1; l < domain.loops().size(); ++l) {
+    const auto& loop = domain.loops()[l];
+    for (std::size_t k = 0; k < loop.size(); ++k) {
+      const Vec2 a = loop[k], b = loop[(k + 1) % loop.size()];
+      cdt.insert_constraint(K::Point_2(a.x, a.y), K::Point_2(b.x, b.y));
+    }
+  }
+  std::vector<K::Point_2> seeds;
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
+    const K::Point_2 c = CGAL::centroid(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point());
+    if (!domain.contains({c.x(), c.y()})) seeds.push_back(c);
+  }
+  return seeds;
 }
 
 PlanarMesh to_planar_mesh(const Cdt& cdt) {
@@ -54,38 +81,62 @@ PlanarMesh to_planar_mesh(const Cdt& cdt) {
   return mesh;
 }
 
-}  // namespace
 
-CvtReference cvt_reference_mesh(Vec2 extent, std::size_t count, int max_iterations) {
-  if (!(extent.x > 0 && extent.y > 0 && std::isfinite(extent.x) && std::isfinite(extent.y)) ||
-      count < 8 || max_iterations < 1) {
-    std::ostringstream msg;
-    msg << "cvt_reference_mesh: need a non-empty rectangle, at least 8 vertices and 1 "
-           "iteration; got "
-        << extent.x << " x " << extent.y << ", " << count << " vertices, " << max_iterations
-        << " iterations";
-    throw InvalidInput(msg.str());
-  }
+/// Refines over the loops at the size that lands near `count` vertices (a few tries,
+/// vertices growing as size^-2), then runs Lloyd.
+CvtReference refine_and_smooth(const std::vector<std::vector<Vec2>>& loops, const std::vector<K::Point_2>& seeds,
+                               double area, std::size_t count, int max_iterations) {
   // Start from the edge length of a hexagonal mesh with `count` vertices, then scale by
-  // how far each refinement lands from the count (vertices grow as size^-2).
-  const double area = extent.x * extent.y;
+  // how far each refinement lands from the count.
   double size = std::sqrt(2 * area / (std::sqrt(3.0) * static_cast<double>(count)));
   CvtReference result;
   Cdt cdt;
   for (int attempt = 0; attempt < 4; ++attempt) {
     const auto t0 = std::chrono::steady_clock::now();
-    refine_rectangle(cdt, extent, size);
+    refine_loops(cdt, loops, seeds, size);
     result.refine_seconds = seconds_since(t0);
     const double ratio = static_cast<double>(cdt.number_of_vertices()) / static_cast<double>(count);
     if (std::abs(ratio - 1) < 0.01) break;
     size *= std::sqrt(ratio);
   }
   const auto t0 = std::chrono::steady_clock::now();
-  CGAL::lloyd_optimize_mesh_2(cdt, CGAL::parameters::max_iteration_number = max_iterations);
+  // Lloyd marks the domain again from its own seeds: the holes' too.
+  if (seeds.empty()) {
+    CGAL::lloyd_optimize_mesh_2(cdt, CGAL::parameters::max_iteration_number = max_iterations);
+  } else {
+    CGAL::lloyd_optimize_mesh_2(cdt, CGAL::parameters::max_iteration_number = max_iterations,
+                                CGAL::parameters::seeds_begin = seeds.begin(),
+                                CGAL::parameters::seeds_end = seeds.end());
+  }
   result.lloyd_seconds = seconds_since(t0);
   result.lloyd_iterations = max_iterations;
   result.mesh = to_planar_mesh(cdt);
   return result;
+}
+
+void check_request(std::size_t count, int max_iterations) {
+  if (count < 8 || max_iterations < 1) {
+    throw InvalidInput("cvt_reference_mesh: need at least 8 vertices and 1 iteration; got " + std::to_string(count) +
+                       " vertices, " + std::to_string(max_iterations) + " iterations");
+  }
+}
+
+}  // namespace
+
+CvtReference cvt_reference_mesh(Vec2 extent, std::size_t count, int max_iterations) {
+  if (!(extent.x > 0 && extent.y > 0 && std::isfinite(extent.x) && std::isfinite(extent.y))) {
+    std::ostringstream msg;
+    msg << "cvt_reference_mesh: need a non-empty rectangle; got " << extent.x << " x " << extent.y;
+    throw InvalidInput(msg.str());
+  }
+  check_request(count, max_iterations);
+  const std::vector<std::vector<Vec2>> rectangle{{{0, 0}, {extent.x, 0}, {extent.x, extent.y}, {0, extent.y}}};
+  return refine_and_smooth(rectangle, {}, extent.x * extent.y, count, max_iterations);
+}
+
+CvtReference cvt_reference_mesh(const PlanarDomain& domain, std::size_t count, int max_iterations) {
+  check_request(count, max_iterations);
+  return refine_and_smooth(domain.loops(), hole_seeds(domain), domain.area(), count, max_iterations);
 }
 
 }  // namespace disktune
