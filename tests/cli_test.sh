@@ -292,7 +292,7 @@ expect features-angle 0 "closed, [0-9]+ feature curves" -- "$bin" sample --domai
 expect features-bad 2 "--features 200: give a dihedral angle in degrees strictly between 0 and 180" -- "$bin" sample --domain "$fandisk" --radius 0.02 --features 200
 expect features-word 2 "--features sharp: give a dihedral angle" -- "$bin" sample --domain "$fandisk" --radius 0.02 --features sharp
 expect features-flat 2 "--features applies to curved surfaces only" -- "$bin" sample --domain periodic --radius 0.05 --features 60
-expect surface-boundary 0 "[0-9]+ disks \([0-9]+ on the boundary\), .*1 boundary loop" -- "$bin" sample --domain "$data/surfaces/mesh_with_border.off" --radius 4 --output mb.csv
+expect surface-boundary 0 "[0-9]+ disks \([0-9]+ on the boundary\), .*1 boundary loop with 4 corners" -- "$bin" sample --domain "$data/surfaces/mesh_with_border.off" --radius 4 --output mb.csv
 expect surface-boundary-read 0 "[0-9]+ disks \([1-9][0-9]* on the boundary\), .*maximal, conflict-free" -- "$bin" report mb.csv --domain "$data/surfaces/mesh_with_border.off" --radius 4
 expect flat-off-is-planar 0 "planar domain .*square_with_hole\.off" -- "$bin" sample --domain "$data/domains/square_with_hole.off" --radius 0.05
 printf 'OFF\n5 2 0\n0 0 0\n1 0 0\n1 1 0.5\n0 1 0\n2 2 1\n4 0 1 2 3\n3 1 4 2\n' >quad.off

@@ -198,6 +198,11 @@ std::string CommandDomain::describe() const {
     } else {
       s << surface->boundary_loops().size() << " boundary loop"
         << (surface->boundary_loops().size() == 1 ? "" : "s");
+      std::size_t on_loops = 0;  // corners on the boundary: its sharp turns, features meeting it
+      for (const auto& loop : surface->boundary_loops())
+        for (const std::size_t v : loop)
+          on_loops += std::binary_search(surface->corners().begin(), surface->corners().end(), v);
+      if (on_loops > 0) s << " with " << on_loops << " corner" << (on_loops == 1 ? "" : "s");
     }
     const auto& f = surface->features();
     if (!f.curves.empty()) {

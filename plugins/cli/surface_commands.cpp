@@ -228,6 +228,7 @@ int run_surface_report(const SurfaceReportJob& job) {
       << ", \"boundary_loops\": " << surface.boundary_loops().size()
       << ", \"feature_curves\": " << surface.features().curves.size()
       << ", \"feature_corners\": " << surface.features().corners.size()
+      << ", \"corners\": " << surface.corners().size()
       << ", \"area\": " << json_number(surface.area()) << "},\n"
       << "  \"sizing\": " << json_string(domain.radius_text()) << ",\n"
       << "  \"min_radius\": " << json_number(packing.sizing().min_radius()) << ",\n"
