@@ -193,7 +193,8 @@ void cap_fans_across_creases(SurfaceMesh& mesh, const std::vector<std::array<std
       const auto it = with_edge.find(edge_key(p, q));
       return it == with_edge.end() ? std::vector<std::size_t>{} : it->second;
     };
-    for (const auto& [a, b] : feature_edges) {
+    for (const auto& feature : feature_edges) {
+      const std::uint32_t a = feature[0], b = feature[1];  // plain names: lambdas below capture them
       const auto on_ab = on(a, b);
       if (on_ab.size() != 1) continue;
       const Tri abx = mesh.triangles[on_ab[0]];
