@@ -60,7 +60,7 @@ absent memory-radius-output z.csv
 expect memory-tune 2 "needs about 1e6 disks .* but 200 MiB are available" -- timeout 20 "$bin" tune --radius 0.001 --target-fraction 0.8 --max-memory 200M --output z.csv
 expect memory-sizing 2 "the radii of the sizing \"1e-05\" are too small for the 1 x 1 box: the job needs about 7e9 disks" -- timeout 20 "$bin" sample --sizing 1e-5 --output z.csv
 absent memory-sizing-output z.csv
-expect memory-expression 2 "the radii of the sizing .* are too small for the 1 x 1 box: the job needs about [0-9.e]+ disks .*raise the smallest radius, 1e-6, to at least [0-9.e-]+ \(darts" -- timeout 20 "$bin" sample --sizing "max(1e-6, 0.02*sqrt((x-0.5)^2 + (y-0.5)^2))" --output z.csv --max-memory 20G
+expect memory-expression 2 "the radii of the sizing .* are too small for the 1 x 1 box: the job needs about [0-9.e]+ disks .*darts are thrown on cells as small as the smallest radius, 1e-6, over the whole domain \([0-9.e]+ cells, ~[0-9.]+ [TPE]iB\): raise it to at least [0-9.e-]+," -- timeout 20 "$bin" sample --sizing "max(1e-6, 0.02*sqrt((x-0.5)^2 + (y-0.5)^2))" --output z.csv --max-memory 20G
 expect memory-surface 2 "radius 1e-5 is too small for this surface of area 1\.018" -- timeout 20 "$bin" sample --domain "$data/surfaces/eight.off" --radius 1e-5 --output z.csv
 expect memory-surface-sizing 2 "radius 1e-5 is too small for this surface of area 1\.018: the job needs about 7\.1e9 disks" -- timeout 20 "$bin" tune --domain "$data/surfaces/eight.off" --sizing 1e-5 --target-fraction 0.7 --output z.csv
 absent memory-surface-output z.csv
@@ -255,7 +255,7 @@ expect sizing-warning 0 "warning: the sizing's gradation L = 0.4" -- "$bin" samp
 # the smallest radius, over the whole domain) and neighbour grid (cells as wide as the
 # largest) are counted too.
 rm -f z.csv
-expect memory-boundary 2 "the radii of the sizing .*boundary grading.* are too small for this domain of area 0\.84: the job needs about [0-9.e]+ disks \(~[0-9.]+ [TPE]iB\) but .* available; raise the smallest radius, 1e-6, to at least [0-9.e-]+ \(darts are thrown on cells of its size" -- timeout 20 "$bin" sample --domain hole.poly --sizing boundary:1e-6,0.05,0.1 --output z.csv
+expect memory-boundary 2 "the radii of the sizing .*boundary grading.* are too small for this domain of area 0\.84: the job needs about [0-9.e]+ disks \(~[0-9.]+ [TPE]iB\) but .* available; darts are thrown on cells as small as the smallest radius, 1e-6, over the whole domain \([0-9.e]+ cells, ~[0-9.]+ [TPE]iB\): raise it to at least [0-9.e-]+," -- timeout 20 "$bin" sample --domain hole.poly --sizing boundary:1e-6,0.05,0.1 --output z.csv
 absent memory-boundary-output z.csv
 expect sizing-crystal 2 "crystal growth needs one radius" -- "$bin" tune --domain hole.poly --sizing "0.03 + 0.03*x" --input v.csv --target-fraction 0.8 --method crystal
 

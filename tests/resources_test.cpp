@@ -11,6 +11,7 @@
 
 #include "disktune/resources.h"
 #include "disktune/sampling.h"
+#include "disktune/sizing.h"
 #include "disktune/surface_sampling.h"
 #include "surface_checks.h"
 #include "test_util.h"
@@ -154,6 +155,28 @@ TEST(Resources, GuardRefusesWhatDoesNotFit) {
   const auto eight = test::surface_file("eight.off");
   EXPECT_THROW(check_resources(estimate_resources(*eight, SurfaceSizing::constant(1e-5)), 1e9), InvalidInput);
   EXPECT_NO_THROW(check_resources(estimate_resources(*eight, SurfaceSizing::constant(0.05)), 1e9));
+}
+
+// The refusals' figures read as figures: no radius beyond the domain (or "inf") where
+// no radius helps, byte counts past EiB as powers of ten, and a dart grid that dwarfs
+// its few disks named as the reason, with where the radius is smallest.
+TEST(Resources, RefusalsSuggestWhatCanHelp) {
+  const ResourceEstimate box = estimate_resources(PeriodicBox(1, 1), 0.01);
+  for (const double limit : {0.0, 1024.0}) {
+    const std::string msg = message_of([&] { check_resources(box, limit); });
+    EXPECT_NE(msg.find("too little for a packing of the 1 x 1 box"), std::string::npos) << msg;
+    EXPECT_EQ(msg.find("r >="), std::string::npos) << msg;
+    EXPECT_EQ(msg.find("inf"), std::string::npos) << msg;
+  }
+  // Two corners 1e-12 apart: radii of 4.5e-13 there, darts on ~1e25 cells.
+  const auto close = std::make_shared<const PlanarDomain>(std::vector<Vec2>{{0, 0}, {1, 0}, {1, 1}, {1e-12, 1}, {0, 1}});
+  const ResourceEstimate e = estimate_resources(*close, feature_sizing(close, 0.05));
+  const std::string msg = message_of([&] { check_resources(e, 1e10); });
+  EXPECT_NE(msg.find("near (1e-12, 1)"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("darts are thrown on cells as small as the smallest radius"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("e+26 bytes"), std::string::npos) << msg;  // not "274129142 EiB"
+  EXPECT_NE(msg.find(" disks ("), std::string::npos) << msg;
+  EXPECT_EQ(msg.find("e2 disks"), std::string::npos) << msg;  // a few hundred disks written out
 }
 
 TEST(Resources, AvailableMemoryIsPositiveAndBounded) {

@@ -65,8 +65,8 @@ constexpr double kFeatureGradation = 0.2;
 /// it along its loop (at a polygon vertex: the nearest segment not ending there). The
 /// radius shrinks near thin parts, close holes and short segments, grows away from them
 /// at the gradation, and is r_max elsewhere; it is `gradation`-Lipschitz. Sites lie on the
-/// boundary a quarter of their radius apart; evaluating r looks at the sites within
-/// r_max / gradation. Throws InvalidInput unless r_max > 0 and 0 < gradation < 0.5.
+/// boundary a quarter of their radius apart; evaluating r searches them (a kd-tree,
+/// branch and bound) in about logarithmic time. Throws InvalidInput unless r_max > 0 and 0 < gradation < 0.5.
 Sizing feature_sizing(std::shared_ptr<const PlanarDomain> domain, double r_max,
                       double gradation = kFeatureGradation);
 
@@ -81,6 +81,9 @@ struct SizingStats {
   /// Largest |r(a) - r(b)| / |a - b| over neighbouring sample points: an estimate of
   /// the Lipschitz constant L from below (exact for piecewise-linear r on the grid).
   double lipschitz = 0;
+  /// A bound on r anywhere in the domain, for sizing a packing's grid: max plus
+  /// lipschitz times a sample cell's diagonal, and at least 5 % above max.
+  double upper = 0;
 };
 
 /// Samples r on a grid of about `samples` points over the frame with near-square cells

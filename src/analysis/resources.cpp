@@ -100,7 +100,7 @@ ResourceEstimate sized(const Frame& frame, const PlanarDomain* domain, const Siz
   const SizingStats stats = measure_sizing(sizing, frame, domain);
   const double unit = density_integral(sizing, frame, domain);
   // As sized_packing: between its samples r may exceed their largest by a little.
-  const double r_grid = stats.max * 1.05;
+  const double r_grid = stats.upper;
   const double densest = densest_cell_integral(sizing, frame, domain, r_grid / std::sqrt(2.0));
   ResourceEstimate e = planar_estimate(frame, periodic_box, unit, stats.min, stats.max, r_grid, densest);
   e.subject = "the sizing \"" + sizing.description() + "\"";
@@ -126,13 +126,22 @@ std::string bytes_text(double bytes) {
   int u = 0;
   while (bytes >= 1024 && u < 6) bytes /= 1024, ++u;
   char text[48];
-  std::snprintf(text, sizeof text, bytes < 10 ? "%.2g %s" : "%.0f %s", bytes, units[u]);
+  if (bytes >= 1024) {  // past EiB: a power of ten of bytes, not "274129142 EiB"
+    std::snprintf(text, sizeof text, "%.1e bytes", bytes * std::pow(1024.0, u));
+  } else {
+    std::snprintf(text, sizeof text, bytes < 10 ? "%.2g %s" : "%.0f %s", bytes, units[u]);
+  }
   return text;
 }
 
-// Two significant digits: "0.00036", "3.1e8" (not "3.1e+08").
+// Two significant digits: "0.00036", "430", "3.1e8" (not "3.1e+08" or "4.3e+02").
 std::string number_text(double v) {
   char text[32];
+  if (std::abs(v) >= 100 && std::abs(v) < 1e6) {
+    const double unit = std::pow(10.0, std::floor(std::log10(std::abs(v))) - 1);
+    std::snprintf(text, sizeof text, "%.0f", std::round(v / unit) * unit);
+    return text;
+  }
   std::snprintf(text, sizeof text, "%.2g", v);
   std::string s = text;
   const std::size_t e = s.find('e');
@@ -271,12 +280,21 @@ void check_resources(const ResourceEstimate& e, double limit) {
     const double f = std::sqrt(e.bytes / limit) * 1.01;
     const double darts = kBytesPerDartCell * e.dart_cells, rest = e.bytes - darts;
     std::string fix;
+    const bool darts_first = !one_radius && rest < 0.5 * limit;
+    if (!darts_first && !(e.disks / (f * f) >= 10)) {
+      // Radii that would fit are so large that fewer than 10 disks remain (or none at
+      // all: a limit of 0): no radius is the fix.
+      throw InvalidInput("the memory allowed, " + bytes_text(limit) + ", is too little for a packing of " + e.where +
+                             " (" + e.subject + " needs ~" + bytes_text(e.bytes) +
+                             ", and radii large enough to fit would leave fewer than 10 disks); allow more memory",
+                         InvalidInput::Remedy::memory);
+    }
     if (one_radius) {
       fix = "use r >= " + number_text(e.min_radius * f);
-    } else if (rest < 0.5 * limit) {
-      fix = "raise the smallest radius, " + number_text(e.min_radius) + ", to at least " +
-            number_text(e.min_radius * std::sqrt(darts / (limit - rest)) * 1.01) +
-            " (darts are thrown on cells of its size over the whole domain)";
+    } else if (darts_first) {
+      fix = "darts are thrown on cells as small as the smallest radius, " + number_text(e.min_radius) +
+            ", over the whole domain (" + number_text(e.dart_cells) + " cells, ~" + bytes_text(darts) +
+            "): raise it to at least " + number_text(e.min_radius * std::sqrt(darts / (limit - rest)) * 1.01);
     } else {
       fix = "make the radii about " + number_text(f) + " times larger (the smallest, " +
             number_text(e.min_radius) + ", at least " + number_text(e.min_radius * f) + ")";

@@ -40,9 +40,11 @@ struct Lattice {
       throw InvalidInput("sampling a sizing needs at least 4 points, got samples = " +
                          std::to_string(samples));
     }
-    nx = std::max(2LL, std::llround(std::sqrt(samples * (w / h))));
-    nx = std::min<long long>(nx, samples / 2);
-    ny = std::max(2LL, std::llround(static_cast<double>(samples) / static_cast<double>(nx)));
+    // At least 4 nodes a side even for a thin frame (a strip 1e-5 wide), so that its
+    // inside is sampled and not only its two edges; a very thin frame gets more nodes.
+    const long long most = 4LL * samples;
+    nx = std::clamp<long long>(std::llround(std::sqrt(samples * (w / h))), 4, most);
+    ny = std::clamp<long long>(std::llround(static_cast<double>(samples) / static_cast<double>(nx)), 4, most);
   }
 
   // Steps between nodes along each axis.
@@ -128,6 +130,9 @@ SizingStats measure_sizing(const Sizing& sizing, const Frame& frame, const Plana
       }
     }
   }
+  // Between nodes r can rise above the largest sample by about L times the distance to
+  // the nearest node; 5 % at least, as L is only estimated.
+  stats.upper = std::max(stats.max * 1.05, stats.max + stats.lipschitz * std::hypot(lat.hx(), lat.hy()));
   return stats;
 }
 

@@ -11,10 +11,11 @@
 // gradation times the distance to that site, and at most r_max, so it is g-Lipschitz.
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
+#include <cstddef>
+#include <cstdio>
 #include <limits>
+#include <memory>
 #include <sstream>
-#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -31,12 +32,80 @@ struct Site {
   double r;
 };
 
-// A site with the cell of the lookup grid it lies in.
-struct SiteCell {
-  std::int64_t i, j;
-  Site site;
+// The sites in a kd-tree, searched branch and bound for the smallest s.r + g |x - s.p|:
+// a subtree is skipped when its smallest site radius plus g times the distance to its
+// box cannot beat the best so far. A grid of cells r_max / g wide holds tens of
+// thousands of sites per cell along a thin part (their spacing follows lfs, not
+// r_max), which made each evaluation scan them all.
+class SiteTree {
+ public:
+  SiteTree(std::vector<Site> sites, double r_max, double gradation)
+      : sites_(std::move(sites)), r_max_(r_max), g_(gradation) {
+    if (!sites_.empty()) build(0, 0, sites_.size());
+  }
+
+  double operator()(Vec2 x) const {
+    double best = r_max_;
+    if (!sites_.empty()) search(0, 0, sites_.size(), x, best);
+    return best;
+  }
+
+ private:
+  struct Node {
+    Vec2 lo, hi;      // the bounding box of the node's sites
+    double smallest;  // their smallest radius
+  };
+  static constexpr std::size_t kLeaf = 8;
+
+  // Node k holds sites [begin, end); its children are 2k + 1 and 2k + 2, split at the
+  // median along the box's longer side.
+  void build(std::size_t k, std::size_t begin, std::size_t end) {
+    if (nodes_.size() <= k) nodes_.resize(k + 1);
+    Node n{sites_[begin].p, sites_[begin].p, sites_[begin].r};
+    for (std::size_t i = begin; i < end; ++i) {
+      const Site& s = sites_[i];
+      n.lo = {std::min(n.lo.x, s.p.x), std::min(n.lo.y, s.p.y)};
+      n.hi = {std::max(n.hi.x, s.p.x), std::max(n.hi.y, s.p.y)};
+      n.smallest = std::min(n.smallest, s.r);
+    }
+    nodes_[k] = n;
+    if (end - begin <= kLeaf) return;
+    const bool along_x = n.hi.x - n.lo.x >= n.hi.y - n.lo.y;
+    const std::size_t mid = begin + (end - begin) / 2;
+    std::nth_element(sites_.begin() + static_cast<std::ptrdiff_t>(begin), sites_.begin() + static_cast<std::ptrdiff_t>(mid),
+                     sites_.begin() + static_cast<std::ptrdiff_t>(end),
+                     [along_x](const Site& a, const Site& b) { return along_x ? a.p.x < b.p.x : a.p.y < b.p.y; });
+    build(2 * k + 1, begin, mid);
+    build(2 * k + 2, mid, end);
+  }
+
+  double bound(std::size_t k, Vec2 x) const {
+    const Node& n = nodes_[k];
+    const double dx = std::max({n.lo.x - x.x, 0.0, x.x - n.hi.x}), dy = std::max({n.lo.y - x.y, 0.0, x.y - n.hi.y});
+    return n.smallest + g_ * std::hypot(dx, dy);
+  }
+
+  void search(std::size_t k, std::size_t begin, std::size_t end, Vec2 x, double& best) const {
+    if (bound(k, x) >= best) return;
+    if (end - begin <= kLeaf) {
+      for (std::size_t i = begin; i < end; ++i) best = std::min(best, sites_[i].r + g_ * distance(x, sites_[i].p));
+      return;
+    }
+    const std::size_t mid = begin + (end - begin) / 2;
+    const bool left_first = bound(2 * k + 1, x) <= bound(2 * k + 2, x);  // the likelier winner first prunes more
+    if (left_first) {
+      search(2 * k + 1, begin, mid, x, best);
+      search(2 * k + 2, mid, end, x, best);
+    } else {
+      search(2 * k + 2, mid, end, x, best);
+      search(2 * k + 1, begin, mid, x, best);
+    }
+  }
+
+  std::vector<Site> sites_;
+  std::vector<Node> nodes_;
+  double r_max_, g_;
 };
-bool cell_less(const SiteCell& a, const SiteCell& b) { return std::tie(a.i, a.j) < std::tie(b.i, b.j); }
 
 // The most sites a feature sizing lays down (about a million boundary disks' worth):
 // past it a feature is too small for the r_max asked, and laying down more would only
@@ -100,36 +169,21 @@ Sizing feature_sizing(std::shared_ptr<const PlanarDomain> domain, double r_max, 
                        " is not valid: it needs r_max > 0 and 0 < gradation < 0.5 (0.2 keeps Delaunay "
                        "angles above 14.5 degrees; docs/sizing.md)");
   }
-  // The sites in cells `reach` wide: every site that can lower r(x) lies in the 3 x 3
-  // cells around x, and r(x) is exact.
-  const double reach = r_max / gradation;
-  auto key = [reach](Vec2 p) {
-    return std::pair<std::int64_t, std::int64_t>{static_cast<std::int64_t>(std::floor(p.x / reach)),
-                                                 static_cast<std::int64_t>(std::floor(p.y / reach))};
+  std::vector<Site> sites = feature_sites(*domain, r_max);
+  Site smallest{{}, r_max};
+  for (const Site& site : sites)
+    if (site.r < smallest.r) smallest = site;
+  const auto tree = std::make_shared<const SiteTree>(std::move(sites), r_max, gradation);
+  // Where the radius is smallest: what a refusal for the job's size should point at.
+  const auto short_text = [](double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g", v);
+    return std::string(text);
   };
-  std::vector<SiteCell> cells;
-  double smallest = r_max;
-  for (const Site& s : feature_sites(*domain, r_max)) {
-    const auto [i, j] = key(s.p);
-    cells.push_back({i, j, s});
-    smallest = std::min(smallest, s.r);
-  }
-  std::sort(cells.begin(), cells.end(), cell_less);
-  const auto shared = std::make_shared<const std::vector<SiteCell>>(std::move(cells));
   std::string description = "feature sizing min(" + number_text(r_max) + ", " + number_text(kFeatureShare) +
-                            " lfs graded at " + number_text(gradation) + "), smallest " + number_text(smallest);
-  return Sizing(
-      [shared, key, r_max, gradation](Vec2 x) {
-        double r = r_max;
-        const auto [ci, cj] = key(x);
-        for (std::int64_t i = ci - 1; i <= ci + 1; ++i)
-          for (std::int64_t j = cj - 1; j <= cj + 1; ++j) {
-            const auto range = std::equal_range(shared->begin(), shared->end(), SiteCell{i, j, {}}, cell_less);
-            for (auto c = range.first; c != range.second; ++c)
-              r = std::min(r, c->site.r + gradation * distance(x, c->site.p));
-          }
-        return r;
-      },
+                            " lfs graded at " + number_text(gradation) + "), smallest " + short_text(smallest.r);
+  if (smallest.r < r_max) description += " near (" + short_text(smallest.p.x) + ", " + short_text(smallest.p.y) + ")";
+  return Sizing([tree](Vec2 x) { return (*tree)(x); },
       std::move(description));
 }
 

@@ -106,7 +106,7 @@ Packing sized_packing(const Frame& frame, std::shared_ptr<const PlanarDomain> do
   check_gradation(measured);
   if (stats) *stats = measured;
   // The grid samples r: between samples it can exceed their maximum by a little.
-  Packing packing(frame, measured.max * 1.05);
+  Packing packing(frame, measured.upper);
   packing.set_domain(std::move(domain));
   packing.set_sizing(std::move(sizing));
   return packing;
