@@ -14,6 +14,9 @@
 
 namespace disktune {
 
+/// Which way boundary tuning may change each curve's disk count.
+enum class BoundaryChange { any, only_more, only_fewer };
+
 /// The boundary disks in order along each loop of the domain (loop 0 outer).
 using BoundaryLoops = std::vector<std::vector<DiskId>>;
 
@@ -42,8 +45,21 @@ void fill_boundary_voids(Packing& packing, const PlanarDomain& domain, Rng& rng)
 /// of its neighbours (in ds / r) where valid. After every step the boundary disks stay
 /// max(r_i, r_j) apart (also across corners and loops) and cover the boundary, and the
 /// packing stays conflict-free and maximal. Marks the boundary disks first
-/// (boundary_loops), so it also takes a packing read from a file.
-void tune_boundary(Packing& packing, const PlanarDomain& domain, double spacing_factor, Rng& rng);
+/// (boundary_loops), so it also takes a packing read from a file. With `change` other
+/// than any, no segment's count moves the other way, and the segments' counts change by
+/// at most `budget` disks in all (each scaled down alike): tune() passes the way to its
+/// target and how many disks are missing, as in a thin domain nearly every disk is on
+/// the boundary, and spacing it for the interior's density would overshoot the target.
+void tune_boundary(Packing& packing, const PlanarDomain& domain, double spacing_factor, Rng& rng,
+                   BoundaryChange change = BoundaryChange::any,
+                   std::size_t budget = static_cast<std::size_t>(-1));
+
+/// 1D injection or ejection until the boundary holds `change` disks more (fewer when
+/// negative), shared among the segments in proportion to their lengths, as far as the
+/// steps get (tune_boundary's steps and guarantees). The scheduler's last phase, for
+/// domains whose disks are nearly all on the boundary. Returns the net disks added to
+/// the boundary (interior disks it displaces are refilled and not counted).
+long boundary_tune_by(Packing& packing, const PlanarDomain& domain, long change, Rng& rng);
 
 /// One 1D injection at a movable boundary disk p drawn at random (paper 2.1 along the
 /// boundary): p moves to one end, at random, of the stretch of its segment its

@@ -110,4 +110,13 @@ class Packing {
 /// quality report's eta are counts over it.
 double density_unit(const Packing& packing, double area);
 
+/// How many disks fit one after another along a planar domain's boundary: its length
+/// over r, or the integral of 1 / r(s) along it with a sizing (by steps of a quarter of
+/// r). Centers on the boundary have half their disk outside, so a thin domain holds more
+/// than the hexagonal density of its area alone; targets allow this many more (for a
+/// convex domain Oler's inequality needs half of it, plus one).
+double boundary_unit(const PlanarDomain& domain, const Sizing* sizing, double r);
+/// The same for a packing's domain and radius or sizing; 0 in the periodic box.
+double boundary_unit(const Packing& packing);
+
 }  // namespace disktune

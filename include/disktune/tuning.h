@@ -34,9 +34,11 @@ struct Target {
 /// (hexagonal) packing.
 std::size_t target_count(const Target& target, double r, double area);
 /// The count a target means where `unit` disks make area fraction 1 (density_unit in
-/// packing.h).
-std::size_t target_count_for_unit(const Target& target, double unit);
-/// The count a target means for this packing (its radius or its sizing).
+/// packing.h). A count is refused above the hexagonal packing's 0.9069 unit plus
+/// `boundary` (boundary_unit in packing.h: what a bounded domain's edges hold beyond it).
+std::size_t target_count_for_unit(const Target& target, double unit, double boundary = 0);
+/// The count a target means for this packing (its radius or its sizing, and its domain's
+/// boundary).
 std::size_t target_count(const Target& target, const Packing& packing, double area);
 
 /// The operations, and the phases of the scheduler that run them.
@@ -48,7 +50,9 @@ enum class Phase {
   angle_injection,
   sift_ejection,
   attractor_ejection,
-  crystal_ejection
+  crystal_ejection,
+  boundary_injection,  // 1D steps on a planar domain's boundary: the automatic schedule's last
+  boundary_ejection
 };
 std::string to_string(Phase phase);
 

@@ -48,7 +48,8 @@ int run_tune(const TuneJob& job) {
   check_output_folder(job.output);
   check_output_folder(job.svg);
   const CommandDomain domain = open_domain(job.domain);
-  const std::size_t target = target_count_for_unit(job.target, domain.unit);  // fail early
+  const double boundary = domain.planar ? boundary_unit(*domain.planar, domain.sizing.get(), domain.radius) : 0;
+  const std::size_t target = target_count_for_unit(job.target, domain.unit, boundary);  // fail early
   check_memory(domain, job.domain, static_cast<double>(target));
   Rng rng(job.seed);
   const auto t0 = std::chrono::steady_clock::now();

@@ -105,4 +105,26 @@ double density_unit(const Packing& packing, double area) {
   return density_integral(*packing.sizing(), packing.frame(), packing.domain());
 }
 
+double boundary_unit(const PlanarDomain& domain, const Sizing* sizing, double r) {
+  double unit = 0;
+  for (const BoundarySegment& s : domain.segments()) {
+    const double len = distance(s.a, s.b);
+    if (!sizing) {
+      unit += len / r;
+      continue;
+    }
+    for (double t = 0; t < len;) {  // midpoint rule, steps a quarter of r at their start
+      const double h = std::min(0.25 * (*sizing)(s.a + (s.b - s.a) * (t / len)), len - t);
+      unit += h / (*sizing)(s.a + (s.b - s.a) * ((t + h / 2) / len));
+      t += h;
+    }
+  }
+  return unit;
+}
+
+double boundary_unit(const Packing& packing) {
+  if (!packing.domain()) return 0;
+  return boundary_unit(*packing.domain(), packing.sizing(), packing.max_radius());
+}
+
 }  // namespace disktune

@@ -47,11 +47,19 @@ class PlanarCurves {
 
 }  // namespace
 
-void tune_boundary(Packing& packing, const PlanarDomain& domain, double spacing_factor, Rng& rng) {
+void tune_boundary(Packing& packing, const PlanarDomain& domain, double spacing_factor, Rng& rng,
+                   BoundaryChange change, std::size_t budget) {
   boundary_loops(packing, domain);  // flags the boundary disks (a packing read from a file)
   PlanarCurves curves(packing, domain);
   detail::CurveTuner<PlanarCurves> tuner(curves);
-  tuner.tune(spacing_factor, rng);
+  tuner.tune([&](std::size_t) { return spacing_factor; }, rng, change, budget);
+}
+
+long boundary_tune_by(Packing& packing, const PlanarDomain& domain, long change, Rng& rng) {
+  boundary_loops(packing, domain);
+  PlanarCurves curves(packing, domain);
+  detail::CurveTuner<PlanarCurves> tuner(curves);
+  return tuner.tune_by(change, rng);
 }
 
 long boundary_inject(Packing& packing, const PlanarDomain& domain, Rng& rng) {

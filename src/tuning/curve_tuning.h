@@ -40,6 +40,7 @@
 #include <utility>
 #include <vector>
 
+#include "disktune/boundary.h"
 #include "disktune/random.h"
 #include "disktune/tolerance.h"
 #include "disktune/vec3.h"
@@ -148,17 +149,49 @@ class CurveTuner {
     return net;
   }
 
-  /// Curve c toward its target at `factor`, then its gaps evened out.
-  long tune_one(std::size_t c, double factor, Rng& rng) {
-    const long net = tune_curve(c, target(c, factor), rng);
-    even_out(c, kEvenSweeps, rng);
-    return net;
+  /// Every curve toward its count at spacing factor_of(c) r (target), each curve's count
+  /// moving only the way `change` allows, and by at most `budget` disks over all curves
+  /// (each curve's change scaled down alike when they add up to more); then its gaps
+  /// evened out. Returns the net number of disks added.
+  template <class FactorOf>
+  long tune(FactorOf factor_of, Rng& rng, BoundaryChange change = BoundaryChange::any,
+            std::size_t budget = static_cast<std::size_t>(-1)) {
+    std::vector<long> delta(curves_.size());
+    double total = 0;
+    for (std::size_t c = 0; c < curves_.size(); ++c) {
+      delta[c] = static_cast<long>(target(c, factor_of(c))) - static_cast<long>(movable_count(c));
+      if (change == BoundaryChange::only_more) delta[c] = std::max(delta[c], 0L);
+      if (change == BoundaryChange::only_fewer) delta[c] = std::min(delta[c], 0L);
+      total += static_cast<double>(std::abs(delta[c]));
+    }
+    const double scale = total > static_cast<double>(budget) ? static_cast<double>(budget) / total : 1.0;
+    for (long& d : delta) d = static_cast<long>(static_cast<double>(d) * scale);  // toward zero
+    return tune_by(delta, rng);
   }
 
-  /// Every curve so.
-  long tune(double factor, Rng& rng) {
+  /// The boundary's count moved by `change` disks, shared among the curves in proportion
+  /// to their lengths (what a curve cannot take is lost: its steps stall).
+  long tune_by(long change, Rng& rng) {
+    double length = 0;
+    for (const Curve<Pos>& cv : curves_) length += cv.length();
+    std::vector<long> delta(curves_.size());
+    double before = 0;
+    for (std::size_t c = 0; c < curves_.size(); ++c) {  // cumulative rounding: the shares add up to change
+      const double after = before + curves_[c].length();
+      delta[c] = std::lround(static_cast<double>(change) * after / length) - std::lround(static_cast<double>(change) * before / length);
+      before = after;
+    }
+    return tune_by(delta, rng);
+  }
+
+  /// Curve c's count moved by delta[c], for every curve; then its gaps evened out.
+  long tune_by(const std::vector<long>& delta, Rng& rng) {
     long net = 0;
-    for (std::size_t c = 0; c < curves_.size(); ++c) net += tune_one(c, factor, rng);
+    for (std::size_t c = 0; c < curves_.size(); ++c) {
+      const long goal = std::max(0L, static_cast<long>(movable_count(c)) + delta[c]);
+      net += tune_curve(c, static_cast<std::size_t>(goal), rng);
+      even_out(c, kEvenSweeps, rng);
+    }
     return net;
   }
 

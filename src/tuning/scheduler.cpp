@@ -2,6 +2,7 @@
 // The phase scheduler (paper, section 4): sweeps of one operation over all disks in
 // random order, moving to the next phase at the area-fraction thresholds or when a
 // sweep stops paying, and stopping the moment the count is the target.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <vector>
@@ -16,11 +17,37 @@
 namespace disktune {
 namespace {
 
+// The boundary's count moved by what is missing, in one sweep, for a domain whose disks
+// are mostly on the boundary (a thin one), where the interior phases stall. Kept only
+// when the count moved toward the goal without passing it: a boundary disk less can
+// make room for two inside.
+template <int kSign>
+std::size_t boundary_sweep(Packing& packing, Rng& rng, std::size_t missing, const std::function<void()>& done) {
+  const Packing before = packing;
+  boundary_tune_by(packing, *packing.domain(), kSign * static_cast<long>(missing), rng);
+  const long moved = kSign * (static_cast<long>(packing.size()) - static_cast<long>(before.size()));
+  const bool kept = moved >= 0 && moved <= static_cast<long>(missing);
+  if (!kept) packing = before;
+  done();
+  return kept ? static_cast<std::size_t>(moved) : 0;
+}
+
+bool mostly_boundary(const Packing& packing) {
+  std::size_t fixed = 0;
+  for (const DiskId id : packing.ids()) fixed += (packing.flags(id) & kFixed) != 0;
+  return 2 * fixed > packing.size();
+}
+
 // The scheduler for a domain of the given area; `entry` is the packing as tune got it.
 TuneResult tune_in(Packing& packing, const Packing& entry, double area, const Target& target, Rng& rng,
                    const TuneOptions& options, std::chrono::steady_clock::time_point t0) {
   const std::size_t goal = target_count(target, packing, area);
-  const auto plans = detail::plan_for<Packing>(options, goal < packing.size(), packing.sizing() == nullptr, &angle_inject);
+  const bool eject = goal < packing.size();
+  auto plans = detail::plan_for<Packing>(options, eject, packing.sizing() == nullptr, &angle_inject);
+  if (packing.domain() && options.method == Method::automatic && mostly_boundary(packing)) {
+    plans.push_back({eject ? Phase::boundary_ejection : Phase::boundary_injection, nullptr,
+                     eject ? &boundary_sweep<-1> : &boundary_sweep<1>, 2.0});
+  }
   return detail::run_phases(packing, entry, density_unit(packing, area), goal, plans, rng, options,
                             options.after_operation, t0);
 }
@@ -49,10 +76,14 @@ TuneResult tune(Packing& packing, const PlanarDomain& domain, const Target& targ
   }
   // The boundary first, at the spacing of a hexagonal packing of the target's count:
   // r / rho, rho = sqrt(eta 2 sqrt3 / pi) the target's relative radius.
-  const double eta = static_cast<double>(target_count(target, packing, domain.area())) /
-                     density_unit(packing, domain.area());
+  const std::size_t goal = target_count(target, packing, domain.area());
+  const double eta = static_cast<double>(goal) / density_unit(packing, domain.area());
+  const BoundaryChange change = goal > packing.size()   ? BoundaryChange::only_more
+                                : goal < packing.size() ? BoundaryChange::only_fewer
+                                                        : BoundaryChange::any;
+  const std::size_t missing = goal > packing.size() ? goal - packing.size() : packing.size() - goal;
   return detail::as_transaction(packing, [&](const Packing& entry) {
-    tune_boundary(packing, domain, 1 / relative_radius_for(eta), rng);
+    tune_boundary(packing, domain, 1 / relative_radius_for(eta), rng, change, missing);
     return tune_in(packing, entry, domain.area(), target, rng, options, t0);
   });
 }

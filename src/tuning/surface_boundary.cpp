@@ -66,8 +66,10 @@ class SurfaceCurves {
 void respace_surface_boundary(SurfacePacking& packing, double spacing_factor, Rng& rng) {
   SurfaceCurves curves(packing);
   detail::CurveTuner<SurfaceCurves> tuner(curves);
-  for (std::size_t c = 0; c < tuner.curve_count(); ++c)
-    tuner.tune_one(c, curves.is_feature(c) ? std::min(spacing_factor, kCurveSpacing) : spacing_factor, rng);
+  const auto factor_of = [&](std::size_t c) {
+    return curves.is_feature(c) ? std::min(spacing_factor, kCurveSpacing) : spacing_factor;
+  };
+  tuner.tune(factor_of, rng);
 }
 
 long boundary_inject(SurfacePacking& packing, Rng& rng) {

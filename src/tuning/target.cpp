@@ -13,8 +13,9 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr double kHexFraction = 0.9069;  // pi / (2 sqrt 3), rounded down
 
 // `unit` is the count at area fraction 1: A / (pi r^2 / 4) for one radius, the integral
-// of 4 / (pi r(x)^2) over the domain with a sizing.
-std::size_t count_for(const Target& target, double unit) {
+// of 4 / (pi r(x)^2) over the domain with a sizing; `boundary` what fits along a bounded
+// domain's edges (boundary_unit).
+std::size_t count_for(const Target& target, double unit, double boundary) {
   const double v = target.value;
   auto refuse = [&](const std::string& why) {
     std::ostringstream msg;
@@ -37,11 +38,15 @@ std::size_t count_for(const Target& target, double unit) {
       n = std::round(kPi / (2 * std::sqrt(3.0)) * v * v * unit);
       break;
   }
-  // No packing of r-separated centers beats the hexagonal density.
-  const double densest = kPi / (2 * std::sqrt(3.0)) * unit;
+  // No packing of r-separated centers beats the hexagonal density, but in a bounded
+  // domain those on the boundary have half their disk outside: a thin domain holds a
+  // row of disks whose area exceeds its own.
+  const double densest = kPi / (2 * std::sqrt(3.0)) * unit + boundary;
   if (n > densest) {
     std::ostringstream msg;
-    msg << "more disks than the densest packing holds (" << static_cast<std::size_t>(densest) << ")";
+    msg << "more disks than the densest packing holds (" << static_cast<std::size_t>(densest);
+    if (boundary > 0) msg << ": the hexagonal packing's density over the area, and a row of disks along the boundary";
+    msg << ")";
     refuse(msg.str());
   }
   if (n < 1) refuse("means zero disks");
@@ -50,14 +55,16 @@ std::size_t count_for(const Target& target, double unit) {
 
 }  // namespace
 
-std::size_t target_count_for_unit(const Target& target, double unit) { return count_for(target, unit); }
+std::size_t target_count_for_unit(const Target& target, double unit, double boundary) {
+  return count_for(target, unit, boundary);
+}
 
 std::size_t target_count(const Target& target, double r, double area) {
-  return count_for(target, 4 * area / (kPi * r * r));
+  return count_for(target, 4 * area / (kPi * r * r), 0);
 }
 
 std::size_t target_count(const Target& target, const Packing& packing, double area) {
-  return count_for(target, density_unit(packing, area));
+  return count_for(target, density_unit(packing, area), boundary_unit(packing));
 }
 
 std::string to_string(Phase phase) {
@@ -70,6 +77,8 @@ std::string to_string(Phase phase) {
     case Phase::sift_ejection: return "sifted-disks ejection";
     case Phase::attractor_ejection: return "attractor ejection";
     case Phase::crystal_ejection: return "crystal ejection";
+    case Phase::boundary_injection: return "boundary injection";
+    case Phase::boundary_ejection: return "boundary ejection";
   }
   return "?";
 }
