@@ -277,6 +277,12 @@ expect surface-mesh-ply 0 "-> e4.ply" -- "$bin" mesh e4.csv --domain "$eight" --
 expect surface-from-ply 0 "surface e4\.ply \(420 vertices, [0-9]+ triangles, genus 2, closed" -- "$bin" sample --domain e4.ply --radius 0.05
 expect surface-curvature 0 "^sample: [0-9]+ disks, .*sizing curvature .*genus 0, closed" -- "$bin" sample --domain "$data/surfaces/sphere.off" --sizing curvature --output sc.csv
 expect surface-curvature-report 0 "maximal, conflict-free" -- "$bin" report sc.csv --domain "$data/surfaces/sphere.off" --sizing curvature
+# A radius nearly the sphere's size: a valid packing of 2 disks, written with a warning,
+# reported without a mesh (#17: report used to refuse what sample wrote).
+expect surface-too-few 0 "warning: [0-3] disks are too few to mesh" -- "$bin" sample --domain "$data/surfaces/sphere.off" --radius 0.9 --output few.csv
+expect surface-too-few-report 0 "^report: [0-3] disks, .*maximal, conflict-free; no mesh \(a restricted Delaunay mesh needs at least 4 samples" -- "$bin" report few.csv --domain "$data/surfaces/sphere.off" --radius 0.9 --json few.json
+expect surface-too-few-json 0 '"mesh_check": null,' -- grep -A1 '"mesh_check"' few.json
+expect surface-too-few-mesh 2 "needs at least 4 samples, got [0-3]" -- "$bin" mesh few.csv --domain "$data/surfaces/sphere.off" --radius 0.9 --output few.off
 # varying radii: centers inside larger disks are no conflict, so a sample reads back
 expect surface-curvature-eight 0 "^sample: " -- "$bin" sample --domain "$eight" --sizing curvature:0.02,0.06 --output ec.csv
 expect surface-curvature-tune 0 "reached" -- "$bin" tune --domain "$eight" --sizing curvature:0.02,0.06 --input ec.csv --target-fraction 0.6
@@ -291,6 +297,7 @@ expect features-none 0 "^sample: [0-9]+ disks, eta .*genus 0, closed, area" -- "
 expect features-angle 0 "closed, [0-9]+ feature curves" -- "$bin" sample --domain "$fandisk" --radius 0.02 --features 30
 expect features-bad 2 "--features 200: give a dihedral angle in degrees strictly between 0 and 180" -- "$bin" sample --domain "$fandisk" --radius 0.02 --features 200
 expect features-word 2 "--features sharp: give a dihedral angle" -- "$bin" sample --domain "$fandisk" --radius 0.02 --features sharp
+expect box-size-planar 2 "--width and --height size the periodic box; --domain .*square_with_hole\.poly has its own size" -- "$bin" sample --domain "$data/domains/square_with_hole.poly" --radius 0.05 --width 2
 expect features-flat 2 "--features applies to curved surfaces only" -- "$bin" sample --domain periodic --radius 0.05 --features 60
 expect surface-boundary 0 "[0-9]+ disks \([0-9]+ on the boundary\), .*1 boundary loop with 4 corners" -- "$bin" sample --domain "$data/surfaces/mesh_with_border.off" --radius 4 --output mb.csv
 expect surface-boundary-read 0 "[0-9]+ disks \([1-9][0-9]* on the boundary\), .*maximal, conflict-free" -- "$bin" report mb.csv --domain "$data/surfaces/mesh_with_border.off" --radius 4

@@ -125,6 +125,10 @@ CommandDomain open_domain(const DomainArgs& args) {
                        "; give 'periodic', a planar domain file (.poly, or a flat .off or .obj "
                        "mesh) or a surface file (.off, .obj, .ply, .stl)");
   }
+  if (args.has_box_size && args.kind != "periodic") {
+    throw InvalidInput("--width and --height size the periodic box; --domain " + args.kind +
+                       " has its own size (leave them out, or scale the file)");
+  }
   if (names_surface(args)) return open_surface(args);
   if (args.has_features) {
     throw InvalidInput("--features applies to curved surfaces only; --domain " + args.kind +

@@ -32,6 +32,7 @@ struct DomainArgs {
   std::string kind = "periodic";
   double width = 1, height = 1, radius = 0;
   bool has_radius = false;  // --radius was given
+  bool has_box_size = false;  // --width or --height was given
   std::string sizing;
   // A surface's sharp features: a dihedral angle in degrees, or "none".
   std::string features = "60";

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <memory>
 #include <optional>
+#include <string>
 
 #include "command_domain.h"
 #include "commands.h"
@@ -30,6 +31,15 @@ struct ReportArgs {
   int spectrum_window = 0;  // 0: automatic
 };
 
+// "26.50..125.32", or "none" for a part of the mesh without triangles (a thin domain
+// has no interior triangle).
+std::string angle_range(const PlanarMeshQuality& part) {
+  if (part.triangle_count == 0) return "none";
+  char text[48];
+  std::snprintf(text, sizeof text, "%.2f..%.2f", part.angles.min, part.angles.max);
+  return text;
+}
+
 // A planar domain: the constrained Delaunay mesh, its triangles measured all together,
 // inside and along the boundary (no spectrum: it needs the periodic box).
 int run_planar_report(const ReportArgs& args, const CommandDomain& domain) {
@@ -45,12 +55,12 @@ int run_planar_report(const ReportArgs& args, const CommandDomain& domain) {
   std::printf(
       "report: %zu disks (%zu on the boundary), eta = %.4f, rho = %.4f, %s, %s, distance >= "
       "%.4f r; angles %.2f..%.2f deg (mean |a-60| %.2f, %.1f %% in [50,70]; interior "
-      "triangles %.2f..%.2f, boundary triangles %.2f..%.2f), beta <= %.4f%s%s\n",
+      "triangles %s, boundary triangles %s), beta <= %.4f%s%s\n",
       q.count, q.boundary_count, q.area_fraction, q.relative_radius,
       q.maximal ? "maximal" : "NOT maximal", q.conflict_free ? "conflict-free" : "CONFLICTS",
       q.min_distance_over_r, q.all.angles.min, q.all.angles.max, q.all.angles.mean_abs_dev_60,
-      100 * q.all.angles.fraction_50_70, q.interior.angles.min, q.interior.angles.max,
-      q.boundary.angles.min, q.boundary.angles.max, q.all.local_beta.max,
+      100 * q.all.angles.fraction_50_70, angle_range(q.interior).c_str(), angle_range(q.boundary).c_str(),
+      q.all.local_beta.max,
       args.json.empty() ? "" : " -> ", args.json.c_str());
   return kExitOk;
 }

@@ -40,8 +40,9 @@ void add_domain_options(CLI::App* cmd, DomainArgs& domain) {
                   "mesh (a 2-manifold, possibly with boundary curves, which get fixed disks); "
                   "surface samples are CSV x,y,z,r")
       ->capture_default_str();
-  cmd->add_option("--width", domain.width, "Width W of the periodic box")->capture_default_str();
-  cmd->add_option("--height", domain.height, "Height H of the periodic box")->capture_default_str();
+  const auto box_size_given = [&domain](const std::string&) { domain.has_box_size = true; };
+  cmd->add_option("--width", domain.width, "Width W of the periodic box")->capture_default_str()->each(box_size_given);
+  cmd->add_option("--height", domain.height, "Height H of the periodic box")->capture_default_str()->each(box_size_given);
   cmd->add_option("--radius,-r", domain.radius,
                   "Conflict radius r: no center closer than r to another; every point within r "
                   "of a center. In the box 0 < r < min(W,H)/2")

@@ -53,6 +53,18 @@ std::string boundary_text(const SurfacePacking& packing) {
   return " (" + std::to_string(fixed_count(packing)) + " " + where + ")";
 }
 
+// A restricted Delaunay mesh needs 4 samples (a tetrahedron); fewer still make a valid
+// packing, which sample and tune write with a warning and report measures without a mesh.
+constexpr std::size_t kFewestToMesh = 4;
+
+void warn_too_few_to_mesh(std::size_t count) {
+  if (count >= kFewestToMesh) return;
+  std::fprintf(stderr,
+               "disktune: warning: %zu disks are too few to mesh (a restricted Delaunay mesh needs at least %zu); "
+               "they were still written: use a smaller radius for a mesh\n",
+               count, kFewestToMesh);
+}
+
 // The restricted Delaunay mesh of the samples, in id order, with their radii.
 struct SampleMesh {
   SurfaceMesh mesh;
@@ -142,6 +154,7 @@ int run_surface_sample(const SampleJob& job) {
               boundary_text(packing).c_str(), domain.density_text(packing.size()).c_str(), seconds,
               domain.radius_text().c_str(), domain.describe().c_str(),
               job.output.empty() ? "" : " -> ", job.output.c_str());
+  warn_too_few_to_mesh(packing.size());
   return kExitOk;
 }
 
@@ -164,6 +177,7 @@ int run_surface_tune(const TuneJob& job) {
   const double seconds = seconds_since(t0);
 
   if (!job.output.empty()) write_output();
+  warn_too_few_to_mesh(res.count);
   return report_tune(start, res, domain.density_text(res.count), seconds,
                      " (" + domain.radius_text() + ", " + domain.describe() + ")", job.output);
 }
@@ -187,6 +201,46 @@ int run_surface_mesh(const std::string& input, const DomainArgs& domain_args,
       topology_text(m.check, *domain.surface).c_str(), seconds, output.c_str());
   if (!m.check.problems.empty()) std::printf("mesh: %s\n", m.check.problems.c_str());
   warn_topology(m.check, *domain.surface, "written");
+  return kExitOk;
+}
+
+// The report's JSON up to the mesh: the surface, the sizing and the packing's figures.
+std::string packing_json(const CommandDomain& domain, const SurfacePacking& packing, double eta, double rho,
+                         bool maximal, bool conflict_free) {
+  const SurfaceDomain& surface = *domain.surface;
+  std::ostringstream j;
+  j << "{\n  \"surface\": {\"file\": " << json_string(domain.file)
+      << ", \"vertices\": " << surface.vertices().size()
+      << ", \"triangles\": " << surface.triangles().size() << ", \"genus\": " << surface.genus()
+      << ", \"boundary_loops\": " << surface.boundary_loops().size()
+      << ", \"feature_curves\": " << surface.features().curves.size()
+      << ", \"feature_corners\": " << surface.features().corners.size()
+      << ", \"corners\": " << surface.corners().size()
+      << ", \"area\": " << json_number(surface.area()) << "},\n"
+      << "  \"sizing\": " << json_string(domain.radius_text()) << ",\n"
+      << "  \"min_radius\": " << json_number(packing.sizing().min_radius()) << ",\n"
+      << "  \"max_radius\": " << json_number(packing.sizing().max_radius()) << ",\n"
+      << "  \"count\": " << packing.size() << ",\n"
+      << "  \"boundary_count\": " << fixed_count(packing) << ",\n"  // fixed: boundary and features
+      << "  \"area_fraction\": " << json_number(eta) << ",\n"
+      << "  \"relative_radius\": " << json_number(rho) << ",\n"
+      << "  \"maximal\": " << (maximal ? "true" : "false") << ",\n"
+      << "  \"conflict_free\": " << (conflict_free ? "true" : "false") << ",\n";
+  return j.str();
+}
+
+int report_without_mesh(const SurfaceReportJob& job, const CommandDomain& domain, const SurfacePacking& packing,
+                        double eta, double rho, bool maximal, bool conflict_free) {
+  if (!job.json.empty()) {
+    const std::string text =
+        packing_json(domain, packing, eta, rho, maximal, conflict_free) + "  \"mesh_check\": null,\n  \"mesh\": null\n}\n";
+    write_file_atomically(job.json, [&](std::ostream& out) { out << text; });
+  }
+  std::printf("report: %zu disks%s, eta = %.4f, rho = %.4f, %s, %s; no mesh (a restricted Delaunay mesh needs at "
+              "least %zu samples: use a smaller radius)%s%s\n",
+              packing.size(), boundary_text(packing).c_str(), eta, rho, maximal ? "maximal" : "NOT maximal",
+              conflict_free ? "conflict-free" : "CONFLICTS", kFewestToMesh, job.json.empty() ? "" : " -> ",
+              job.json.c_str());
   return kExitOk;
 }
 
@@ -214,31 +268,16 @@ int run_surface_report(const SurfaceReportJob& job) {
 
   const bool conflict_free = is_conflict_free(packing);
   const bool maximal = is_maximal(packing);
+  const double eta = static_cast<double>(packing.size()) / domain.unit;
+  const double rho = relative_radius_for(eta);
+  if (packing.size() < kFewestToMesh) return report_without_mesh(job, domain, packing, eta, rho, maximal, conflict_free);
   const SampleMesh m = sample_mesh(packing);
   SurfaceMeshQuality q = measure_surface_mesh(m.mesh, m.radius);
   q.hausdorff = hausdorff_distance(m.mesh, surface, 10000, 1);
-  const double eta = static_cast<double>(packing.size()) / domain.unit;
-  const double rho = relative_radius_for(eta);
 
   if (!job.json.empty()) {
     std::ostringstream j;
-    j << "{\n  \"surface\": {\"file\": " << json_string(domain.file)
-      << ", \"vertices\": " << surface.vertices().size()
-      << ", \"triangles\": " << surface.triangles().size() << ", \"genus\": " << surface.genus()
-      << ", \"boundary_loops\": " << surface.boundary_loops().size()
-      << ", \"feature_curves\": " << surface.features().curves.size()
-      << ", \"feature_corners\": " << surface.features().corners.size()
-      << ", \"corners\": " << surface.corners().size()
-      << ", \"area\": " << json_number(surface.area()) << "},\n"
-      << "  \"sizing\": " << json_string(domain.radius_text()) << ",\n"
-      << "  \"min_radius\": " << json_number(packing.sizing().min_radius()) << ",\n"
-      << "  \"max_radius\": " << json_number(packing.sizing().max_radius()) << ",\n"
-      << "  \"count\": " << packing.size() << ",\n"
-      << "  \"boundary_count\": " << fixed_count(packing) << ",\n"  // fixed: boundary and features
-      << "  \"area_fraction\": " << json_number(eta) << ",\n"
-      << "  \"relative_radius\": " << json_number(rho) << ",\n"
-      << "  \"maximal\": " << (maximal ? "true" : "false") << ",\n"
-      << "  \"conflict_free\": " << (conflict_free ? "true" : "false") << ",\n"
+    j << packing_json(domain, packing, eta, rho, maximal, conflict_free)
       << "  \"mesh_check\": {\"manifold\": " << (m.check.manifold ? "true" : "false")
       << ", \"oriented\": " << (m.check.oriented ? "true" : "false")
       << ", \"genus\": " << m.check.genus << ", \"components\": " << m.check.components

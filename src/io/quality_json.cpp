@@ -36,7 +36,8 @@ json to_json(const QualityReport::LocalBeta& b) {
 }
 
 // A mesh's measures (PlanarMeshQuality, SurfaceMeshQuality); `hausdorff`, when given,
-// stands after the counts.
+// stands after the counts. Measures of nothing (no triangle, as in a thin domain's
+// interior; no interior vertex) are null, not zeros that read as figures.
 template <class MeshQuality>
 json mesh_json(const MeshQuality& m, const double* hausdorff = nullptr) {
   json j;
@@ -44,9 +45,9 @@ json mesh_json(const MeshQuality& m, const double* hausdorff = nullptr) {
   j["triangle_count"] = m.triangle_count;
   j["interior_vertex_count"] = m.interior_vertex_count;
   if (hausdorff) j["hausdorff"] = *hausdorff;
-  j["angles"] = to_json(m.angles);
-  j["edges"] = to_json(m.edges);
-  j["local_beta"] = to_json(m.local_beta);
+  j["angles"] = m.triangle_count ? to_json(m.angles) : json(nullptr);
+  j["edges"] = m.triangle_count ? to_json(m.edges) : json(nullptr);
+  j["local_beta"] = m.interior_vertex_count ? to_json(m.local_beta) : json(nullptr);
   return j;
 }
 
