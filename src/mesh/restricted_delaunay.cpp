@@ -22,6 +22,7 @@
 #include <set>
 #include <utility>
 
+#include "bow_tie_caps.h"
 #include "disktune/errors.h"
 #include "disktune/random.h"
 #include "disktune/restricted_delaunay.h"
@@ -375,6 +376,7 @@ SurfaceMesh restricted_delaunay(const std::vector<Vec3>& samples, const SurfaceD
   }
   cap_fans_across_creases(mesh, feature_edges);
   drop_crossings(mesh, sample_patch);
+  detail::cap_bow_ties(mesh);
   // Deterministic order whatever CGAL's internal one: by the triangles' vertex indices.
   std::sort(mesh.triangles.begin(), mesh.triangles.end());
   return mesh;

@@ -1,0 +1,164 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "bow_tie_caps.h"
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <map>
+#include <set>
+#include <utility>
+#include <vector>
+
+namespace disktune::detail {
+namespace {
+
+using Tri = std::array<std::uint32_t, 3>;
+
+std::pair<std::uint32_t, std::uint32_t> edge(std::uint32_t a, std::uint32_t b) { return std::minmax(a, b); }
+
+// One fan of vertex v: its triangles (v, rim[i], rim[i + 1]) around a closed rim.
+struct Fan {
+  std::vector<std::size_t> triangles;
+  std::vector<std::uint32_t> rim;
+};
+
+// The fans of v from its triangles, each a closed cycle of link edges a -> b (triangle
+// (v, a, b) in its own order); empty unless every one is such a cycle.
+std::vector<Fan> closed_fans(const SurfaceMesh& mesh, std::uint32_t v, const std::vector<std::size_t>& around) {
+  std::map<std::uint32_t, std::size_t> from;  // link edge a -> b, by a: its triangle
+  for (const std::size_t t : around) {
+    const Tri& tri = mesh.triangles[t];
+    const int k = static_cast<int>(std::find(tri.begin(), tri.end(), v) - tri.begin());
+    if (!from.emplace(tri[(k + 1) % 3], t).second) return {};  // a link vertex left twice
+  }
+  std::vector<Fan> fans;
+  std::set<std::uint32_t> used;
+  for (const auto& [start, unused] : from) {
+    if (used.count(start)) continue;
+    Fan fan;
+    for (std::uint32_t a = start;;) {
+      const auto it = from.find(a);
+      if (it == from.end() || !used.insert(a).second) return {};  // open, or a figure eight
+      const Tri& tri = mesh.triangles[it->second];
+      const int k = static_cast<int>(std::find(tri.begin(), tri.end(), v) - tri.begin());
+      fan.triangles.push_back(it->second);
+      fan.rim.push_back(a);
+      a = tri[(k + 2) % 3];
+      if (a == start) break;
+    }
+    fans.push_back(std::move(fan));
+  }
+  return fans;
+}
+
+// The rim's plane: its Newell normal (unit; the rim runs counterclockwise about it) and
+// its centroid.
+struct Plane {
+  Vec3 normal, center;
+};
+Plane rim_plane(const std::vector<Vec3>& p, const std::vector<std::uint32_t>& rim) {
+  Vec3 n{0, 0, 0}, c{0, 0, 0};
+  for (std::size_t i = 0; i < rim.size(); ++i) {
+    n = n + cross(p[rim[i]], p[rim[(i + 1) % rim.size()]]);
+    c = c + p[rim[i]];
+  }
+  const double len = norm(n);
+  return {len > 0 ? n * (1 / len) : n, c * (1.0 / static_cast<double>(rim.size()))};
+}
+
+// How far the fan stands out of its rim's plane, for the rim's size.
+double height_ratio(const std::vector<Vec3>& p, std::uint32_t v, const Fan& fan) {
+  const Plane plane = rim_plane(p, fan.rim);
+  double spread = 0;
+  for (const std::uint32_t r : fan.rim) spread += norm(p[r] - plane.center);
+  spread /= static_cast<double>(fan.rim.size());
+  return spread > 0 ? std::abs(dot(p[v] - plane.center, plane.normal)) / spread : 0;
+}
+
+// Ear clipping of the rim in its plane, keeping its orientation: triangles (a, b, c)
+// with a, b, c in rim order. Empty if no ear is found (a rim that folds over itself).
+std::vector<Tri> clip_ears(const std::vector<Vec3>& p, std::vector<std::uint32_t> rim, Vec3 normal) {
+  const auto turn = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+    return dot(cross(p[b] - p[a], p[c] - p[b]), normal);
+  };
+  const auto inside = [&](std::uint32_t q, std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+    return turn(a, b, q) >= 0 && turn(b, c, q) >= 0 && turn(c, a, q) >= 0;
+  };
+  std::vector<Tri> out;
+  while (rim.size() > 3) {
+    bool clipped = false;
+    for (std::size_t i = 0; i < rim.size() && !clipped; ++i) {
+      const std::uint32_t a = rim[(i + rim.size() - 1) % rim.size()], b = rim[i], c = rim[(i + 1) % rim.size()];
+      if (!(turn(a, b, c) > 0)) continue;
+      bool empty = true;
+      for (const std::uint32_t q : rim)
+        if (q != a && q != b && q != c && inside(q, a, b, c)) empty = false;
+      if (!empty) continue;
+      out.push_back({a, b, c});
+      rim.erase(rim.begin() + static_cast<std::ptrdiff_t>(i));
+      clipped = true;
+    }
+    if (!clipped) return {};
+  }
+  out.push_back({rim[0], rim[1], rim[2]});
+  return out;
+}
+
+}  // namespace
+
+std::size_t cap_bow_ties(SurfaceMesh& mesh) {
+  std::size_t caps = 0;
+  for (bool changed = true; changed;) {
+    changed = false;
+    std::vector<std::vector<std::size_t>> around(mesh.vertices.size());
+    std::set<std::pair<std::uint32_t, std::uint32_t>> edges;
+    std::set<Tri> sorted_triangles;
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+      const Tri& tri = mesh.triangles[t];
+      Tri key = tri;
+      std::sort(key.begin(), key.end());
+      sorted_triangles.insert(key);
+      for (int k = 0; k < 3; ++k) {
+        around[tri[k]].push_back(t);
+        edges.insert(edge(tri[k], tri[(k + 1) % 3]));
+      }
+    }
+    for (std::uint32_t v = 0; v < around.size() && !changed; ++v) {
+      const std::vector<Fan> fans = around[v].size() < 6 ? std::vector<Fan>{} : closed_fans(mesh, v, around[v]);
+      if (fans.size() < 2) continue;
+      const Fan& cone = *std::max_element(fans.begin(), fans.end(), [&](const Fan& a, const Fan& b) {
+        return height_ratio(mesh.vertices, v, a) < height_ratio(mesh.vertices, v, b);
+      });
+      const std::vector<Tri> cap = clip_ears(mesh.vertices, cone.rim, rim_plane(mesh.vertices, cone.rim).normal);
+      bool fresh = !cap.empty();
+      for (const Tri& t : cap) {
+        Tri key = t;
+        std::sort(key.begin(), key.end());
+        fresh &= !sorted_triangles.count(key);
+      }
+      std::set<std::pair<std::uint32_t, std::uint32_t>> rim_edges;
+      for (std::size_t i = 0; i < cone.rim.size(); ++i) rim_edges.insert(edge(cone.rim[i], cone.rim[(i + 1) % cone.rim.size()]));
+      for (const Tri& t : cap)
+        for (int k = 0; k < 3; ++k) {
+          const auto e = edge(t[k], t[(k + 1) % 3]);
+          if (!rim_edges.count(e)) fresh &= !edges.count(e);  // a diagonal must be a new edge
+        }
+      if (!fresh) continue;
+      std::vector<bool> gone(mesh.triangles.size(), false);
+      for (const std::size_t t : cone.triangles) gone[t] = true;
+      std::size_t kept = 0;
+      for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+        if (!gone[t]) mesh.triangles[kept++] = mesh.triangles[t];
+      mesh.triangles.resize(kept);
+      for (Tri t : cap) {  // smallest index first, as the mesh's other triangles
+        std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+        mesh.triangles.push_back(t);
+      }
+      ++caps;
+      changed = true;
+    }
+  }
+  return caps;
+}
+
+}  // namespace disktune::detail
