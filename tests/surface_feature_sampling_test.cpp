@@ -255,20 +255,20 @@ TEST(FeatureMeshing, FandiskMeshesAreManifoldsThatFollowTheFeaturesOverSeeds) {
 
 // At r = 0.04 a ball of one of fandisk's feature disks reaches a face 0.033 away under a
 // ledge; its Voronoi cell meets that face too, and the dual test gave the disk a second
-// fan, a cone onto the far face (a bow tie; 19 of 50 seeds before the cap, 0 now). The
-// cap over the cone's rim leaves one fan. Measured: 45 of 50 seeds manifold of genus 0
-// (26 before); the other 5 have an edge in three triangles at the same ledge.
+// fan, a cone onto the far face (a bow tie; 19 of 50 seeds before the cap, 0 now), or
+// one touching its own fan at a shared edge (an edge in three triangles). The cap over the
+// cone's rim leaves one fan. Measured: 48 of 50 seeds manifold of genus 0 (26 before);
+// seeds 26 and 32 keep an edge in three triangles.
 TEST(FeatureMeshing, FandiskAtACoarseRadiusHasNoBowTies) {
   const auto fandisk = with_features(*test::surface_file("fandisk.off"));
-  int manifold = 0;
   for (std::uint64_t seed = 1; seed <= 12; ++seed) {
     Rng rng(seed);
     const SurfacePacking p = sample_mps(fandisk, SurfaceSizing::constant(0.04), rng);
     const MeshFindings m = mesh_findings(p);
     EXPECT_EQ(m.topology.bow_tie_vertices, 0u) << "seed " << seed << ": " << m.topology.summary();
-    manifold += m.topology.manifold() && m.topology.genus == 0 && m.topology.boundary_edges == 0;
+    EXPECT_TRUE(m.topology.manifold() && m.topology.genus == 0 && m.topology.boundary_edges == 0)
+        << "seed " << seed << ": " << m.topology.summary();
   }
-  EXPECT_GE(manifold, 11) << "of 12 seeds";  // seed 9: an edge in three triangles
 }
 
 bool full_sweep() {

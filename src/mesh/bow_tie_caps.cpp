@@ -22,32 +22,51 @@ struct Fan {
   std::vector<std::uint32_t> rim;
 };
 
-// The fans of v from its triangles, each a closed cycle of link edges a -> b (triangle
-// (v, a, b) in its own order); empty unless every one is such a cycle.
+// The fans of v: the link edges a -> b (triangle (v, a, b) in its own order) split into
+// closed cycles. Two fans may touch at a link vertex, which is then left twice (a pinch:
+// the fans share the edge from v to it); walks start at pinches and close on coming back.
+// Empty unless every link edge lies on a simple closed cycle.
 std::vector<Fan> closed_fans(const SurfaceMesh& mesh, std::uint32_t v, const std::vector<std::size_t>& around) {
-  std::map<std::uint32_t, std::size_t> from;  // link edge a -> b, by a: its triangle
-  for (const std::size_t t : around) {
+  std::multimap<std::uint32_t, std::size_t> from;  // link edges a -> b, by a: their triangles
+  std::map<std::uint32_t, int> balance;            // edges out less edges in, per link vertex
+  const auto link = [&](std::size_t t) {
     const Tri& tri = mesh.triangles[t];
     const int k = static_cast<int>(std::find(tri.begin(), tri.end(), v) - tri.begin());
-    if (!from.emplace(tri[(k + 1) % 3], t).second) return {};  // a link vertex left twice
+    return std::pair<std::uint32_t, std::uint32_t>{tri[(k + 1) % 3], tri[(k + 2) % 3]};
+  };
+  for (const std::size_t t : around) {
+    const auto [a, b] = link(t);
+    from.emplace(a, t);
+    ++balance[a], --balance[b];
   }
+  for (const auto& [a, n] : balance)
+    if (n != 0 || from.count(a) > 2) return {};  // open, or more than two fans at one vertex
+  std::vector<std::uint32_t> starts;  // pinches first
+  for (const auto& [a, unused] : balance) starts.push_back(a);
+  std::stable_partition(starts.begin(), starts.end(), [&](std::uint32_t a) { return from.count(a) == 2; });
+  std::set<std::size_t> used;
+  const auto next_edge = [&](std::uint32_t a) {
+    const auto range = from.equal_range(a);
+    for (auto it = range.first; it != range.second; ++it)
+      if (!used.count(it->second)) return it->second;
+    return mesh.triangles.size();
+  };
   std::vector<Fan> fans;
-  std::set<std::uint32_t> used;
-  for (const auto& [start, unused] : from) {
-    if (used.count(start)) continue;
-    Fan fan;
-    for (std::uint32_t a = start;;) {
-      const auto it = from.find(a);
-      if (it == from.end() || !used.insert(a).second) return {};  // open, or a figure eight
-      const Tri& tri = mesh.triangles[it->second];
-      const int k = static_cast<int>(std::find(tri.begin(), tri.end(), v) - tri.begin());
-      fan.triangles.push_back(it->second);
-      fan.rim.push_back(a);
-      a = tri[(k + 2) % 3];
-      if (a == start) break;
+  for (const std::uint32_t start : starts)
+    while (next_edge(start) != mesh.triangles.size()) {
+      Fan fan;
+      std::set<std::uint32_t> on_rim;
+      for (std::uint32_t a = start;;) {
+        const std::size_t t = next_edge(a);
+        if (t == mesh.triangles.size() || !on_rim.insert(a).second) return {};  // stuck, or not simple
+        used.insert(t);
+        fan.triangles.push_back(t);
+        fan.rim.push_back(a);
+        a = link(t).second;
+        if (a == start) break;
+      }
+      fans.push_back(std::move(fan));
     }
-    fans.push_back(std::move(fan));
-  }
   return fans;
 }
 
