@@ -214,7 +214,7 @@ expect planar-auto-bad 2 "expected auto:RMAX or auto:RMAX,G" -- "$bin" sample --
 # A hole 1e-10 from the outer corner: no feature sizing can hold it; refused, not a hang.
 sed 's/^5 0.3 0.3$/5 1e-10 1e-10/; s/^6 0.7 0.3$/6 0.7 1e-10/; s/^8 0.3 0.7$/8 1e-10 0.7/' hole.poly > touching.poly
 expect planar-auto-too-small 2 "features too small for it \(near \(1e-10, 1e-10\) two boundary parts are 1e-10 apart" -- timeout 60 "$bin" sample --domain touching.poly --radius 0.02 --output z.csv
-expect surface-auto 2 "auto: sizings are for planar domains" -- "$bin" sample --domain "$data/surfaces/eight.off" --sizing auto:0.05 --output z.csv
+expect surface-boundary-sizing 2 "boundary: sizings are for planar domains" -- "$bin" sample --domain "$data/surfaces/eight.off" --sizing boundary:0.01,0.05,0.1 --output z.csv
 expect planar-auto-periodic 2 "feature sizing needs a planar domain" -- "$bin" sample --sizing auto:0.05 --output z.csv
 absent planar-big-radius-output z.csv
 printf 'x,y,r\n0.5,0.5,0.05\n' > inhole.csv
@@ -293,6 +293,8 @@ expect features-default 0 "^sample: [0-9]+ disks \([1-9][0-9]* on feature curves
 expect features-read 0 "^report: [0-9]+ disks \([1-9][0-9]* on feature curves\), .*maximal, conflict-free; mesh: .*manifold yes, genus 0" -- "$bin" report fd.csv --domain "$fandisk" --radius 0.02
 expect features-mesh 0 "^mesh: [0-9]+ disks, .* triangles \(restricted Delaunay\), [1-9][0-9]* edges along feature curves, manifold yes, genus 0" -- "$bin" mesh fd.csv --domain "$fandisk" --radius 0.02 --output fd.obj
 grep -q "^l [0-9]* [0-9]*$" fd.obj && pass=$((pass + 1)) || { echo "FAIL feature edges as OBJ lines"; fails=$((fails + 1)); }
+expect surface-auto 0 "^sample: [0-9]+ disks \([1-9][0-9]* on feature curves\), .*sizing thickness sizing min\(0\.05, 0\.45 thickness graded at 0\.2\), smallest 0\.0141 near \(0\.442, 0\.224, -0\.0794\)" -- "$bin" sample --domain "$fandisk" --sizing auto:0.05 --output fa.csv
+expect surface-auto-report 0 "^report: .*maximal, conflict-free; mesh: .*manifold yes, genus 0" -- "$bin" report fa.csv --domain "$fandisk" --sizing auto:0.05
 expect features-none 0 "^sample: [0-9]+ disks, eta .*genus 0, closed, area" -- "$bin" sample --domain "$fandisk" --radius 0.02 --features none
 expect features-angle 0 "closed, [0-9]+ feature curves" -- "$bin" sample --domain "$fandisk" --radius 0.02 --features 30
 expect features-bad 2 "--features 200: give a dihedral angle in degrees strictly between 0 and 180" -- "$bin" sample --domain "$fandisk" --radius 0.02 --features 200

@@ -14,6 +14,7 @@
 #include "disktune/errors.h"
 #include "disktune/random.h"
 #include "disktune/surface_domain.h"
+#include "surface_checks.h"
 #include "test_util.h"
 
 namespace disktune {
@@ -305,6 +306,33 @@ TEST(SurfaceSizing, ParseSpecs) {
   EXPECT_THROW(parse_surface_sizing("", s), InvalidInput);
   EXPECT_THROW(parse_surface_sizing("-0.05", s), InvalidInput);
   EXPECT_THROW(parse_surface_sizing("0.1 + * x", s), InvalidInput);
+
+  const SurfaceSizing thick = parse_surface_sizing("auto:0.05", s);
+  EXPECT_TRUE(contains(thick.description(), "thickness")) << thick.description();
+  EXPECT_EQ(thick.max_radius(), 0.05);  // the sphere is 1 across: nowhere thin
+  EXPECT_THROW(parse_surface_sizing("auto:", s), InvalidInput);
+  EXPECT_THROW(parse_surface_sizing("auto:0.05,0.6", s), InvalidInput);  // gradation from 1/2 on
+  EXPECT_THROW(parse_surface_sizing("auto:0.05,0.2,1", s), InvalidInput);
+  msg = message_of([&] { parse_surface_sizing("boundary:0.01,0.05,0.1", s); });
+  EXPECT_TRUE(contains(msg, "planar domains")) << msg;
+}
+
+// The thickness of a slab 0.02 thick is 0.02 at every vertex (each faces the opposite
+// face straight across): r = 0.45 * 0.02. A cube's faces meet at creases, which do not
+// count, and face each other 1 apart, beyond r_max / 0.45: r = r_max everywhere.
+TEST(SurfaceSizing, ThicknessIsTheDistanceToTheFacingSide) {
+  const auto slab = test::box_surface({1, 1, 0.02}, {10, 10, 1});
+  const SurfaceSizing thin = thickness_sizing(*slab, 0.05);
+  ASSERT_EQ(thin.vertex_radii().size(), slab->vertices().size());
+  for (std::size_t v = 0; v < slab->vertices().size(); ++v)
+    EXPECT_NEAR(thin.vertex_radii()[v], 0.45 * 0.02, 1e-12) << "vertex " << v;
+  EXPECT_TRUE(contains(thin.description(), "smallest 0.009 near")) << thin.description();
+
+  const auto cube = test::box_surface({1, 1, 1}, {4, 4, 4});
+  const SurfaceSizing wide = thickness_sizing(*cube, 0.1);
+  for (const double r : wide.vertex_radii()) EXPECT_EQ(r, 0.1);
+  EXPECT_THROW(thickness_sizing(*cube, 0), InvalidInput);
+  EXPECT_THROW(thickness_sizing(*cube, 0.1, 0.5), InvalidInput);
 }
 
 }  // namespace

@@ -63,12 +63,22 @@ SurfaceSizing curvature_sizing(const SurfaceDomain& domain, const CurvatureSizin
 /// shortest-path pass from the smallest radii outward); never raises one.
 void limit_gradation(const SurfaceDomain& domain, std::vector<double>& radii, double gradation);
 
+/// Thickness sizing (`--sizing auto:RMAX[,G]` on a surface): at each vertex r =
+/// min(r_max, kFeatureShare * thickness), the thickness being the distance to the
+/// nearest other part of the surface that faces the vertex (a triangle whose normal
+/// points against the vertex's, cosine below -1/2, whose closest point lies within 60
+/// degrees of the vertex's normal line): a thin wall, or a face under a ledge. Then the
+/// gradation limit (limit_gradation). Throws InvalidInput unless r_max > 0 and
+/// 0 < gradation < 0.5, or where the surface touches itself.
+SurfaceSizing thickness_sizing(const SurfaceDomain& domain, double r_max, double gradation = 0.2);
+
 /// The integral of 4 / (pi r^2) over the surface: the disk count at area fraction 1
 /// (exact for a constant sizing, else the edge-midpoint rule on every triangle).
 double density_integral(const SurfaceSizing& sizing, const SurfaceDomain& domain);
 
 /// The command line's --sizing for a surface: a number (constant),
-/// "curvature" or "curvature:RMIN,RMAX", else an expression in x, y, z.
+/// "curvature" or "curvature:RMIN,RMAX", "auto:RMAX" or "auto:RMAX,G" (thickness_sizing),
+/// else an expression in x, y, z.
 SurfaceSizing parse_surface_sizing(const std::string& spec, const SurfaceDomain& domain);
 
 }  // namespace disktune

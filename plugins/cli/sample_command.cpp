@@ -51,8 +51,9 @@ void add_domain_options(CLI::App* cmd, DomainArgs& domain) {
                   "Radii that vary over the domain, instead of --radius: a number, an expression "
                   "in x and y (e.g. '0.005 + 0.01*x'), a grid file, or boundary:RMIN,RMAX,G "
                   "(r grows with the distance to a planar domain's boundary); docs/sizing.md. On "
-                  "a surface: a number, an expression in x, y and z, or curvature[:RMIN,RMAX] "
-                  "(smaller where the surface bends more)");
+                  "a surface: a number, an expression in x, y and z, curvature[:RMIN,RMAX] "
+                  "(smaller where the surface bends more), or auto:RMAX (smaller where the surface "
+                  "faces itself closely: thin walls, ledges)");
   cmd->add_option("--features", domain.features,
                   "On a surface: edges where the surface folds by more than ANGLE degrees (the "
                   "angle between their triangles' normals) are sharp features, chained into curves "

@@ -98,7 +98,8 @@ void warn_topology(const SurfaceMeshCheck& check, const SurfaceDomain& surface, 
     std::fprintf(stderr,
                  "disktune: warning: the restricted Delaunay mesh is not a manifold (%zu edges in "
                  "more than two triangles, %zu bow-tie vertices); it was still %s. The samples are "
-                 "too sparse for the surface: use a smaller radius\n",
+                 "too sparse for the surface: use a smaller radius, or --sizing auto:R (smaller "
+                 "where the surface faces itself closely, as thin walls and ledges do)\n",
                  check.non_manifold_edges, check.non_manifold_vertices, done);
   } else if (check.boundary_loops != surface.boundary_loops().size()) {
     std::fprintf(stderr,

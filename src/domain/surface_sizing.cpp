@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "disktune/errors.h"
+#include "disktune/sizing.h"
 #include "expression_formula.h"
 #include "sizing_text.h"
 #include "surface_sizing_util.h"
@@ -53,6 +54,21 @@ SurfaceSizing parse_curvature(const std::string& spec, const std::string& args,
   }
   try {
     return curvature_sizing(domain, options);
+  } catch (const InvalidInput& e) {
+    throw InvalidInput("sizing \"" + spec + "\": " + e.what());
+  }
+}
+
+// "auto:RMAX" or "auto:RMAX,G": thickness_sizing.
+SurfaceSizing parse_thickness(const std::string& spec, const std::string& args, const SurfaceDomain& domain) {
+  const std::size_t comma = args.find(',');
+  double r_max = 0, gradation = kFeatureGradation;
+  if (!parse_number(trimmed(args.substr(0, comma)), r_max) ||
+      (comma != std::string::npos && !parse_number(trimmed(args.substr(comma + 1)), gradation))) {
+    throw InvalidInput("sizing \"" + spec + "\": expected auto:RMAX or auto:RMAX,G with numbers, e.g. auto:0.02");
+  }
+  try {
+    return thickness_sizing(domain, r_max, gradation);
   } catch (const InvalidInput& e) {
     throw InvalidInput("sizing \"" + spec + "\": " + e.what());
   }
@@ -191,12 +207,11 @@ SurfaceSizing parse_surface_sizing(const std::string& spec, const SurfaceDomain&
   if (text.compare(0, prefix.size(), prefix) == 0) {
     return parse_curvature(text, text.substr(prefix.size()), domain);
   }
-  for (const std::string planar : {"auto:", "boundary:"}) {
-    if (text.compare(0, planar.size(), planar) == 0) {
-      throw InvalidInput("sizing \"" + text + "\": " + planar +
-                         " sizings are for planar domains; on a surface give a radius, \"curvature\", "
-                         "curvature:RMIN,RMAX, or an expression in x, y and z");
-    }
+  if (text.compare(0, 5, "auto:") == 0) return parse_thickness(text, text.substr(5), domain);
+  if (text.compare(0, 9, "boundary:") == 0) {
+    throw InvalidInput("sizing \"" + text + "\": boundary: sizings are for planar domains; on a surface give a "
+                       "radius, \"curvature\", curvature:RMIN,RMAX, auto:RMAX (thinner where the surface faces "
+                       "itself), or an expression in x, y and z");
   }
   return surface_expression_sizing(domain, text);
 }
