@@ -162,15 +162,7 @@ TEST(FeatureSizing, DomainsASingleRadiusDoesNotFitAreMeshed) {
       for (const double eta : {0.0, 0.8}) {
         if (eta > 0) tune(p, *d, Target::area_fraction(eta), rng);
         SCOPED_TRACE("seed " + std::to_string(seed) + " eta " + std::to_string(eta));
-        oracle::Points centers;
-        std::vector<double> radii;
-        oracle::PlanarOptions opt;
-        for (const DiskId id : p.ids()) {
-          centers.push_back({p.center(id).x, p.center(id).y});
-          radii.push_back(p.radius(id));
-          opt.boundary_flags.push_back((p.flags(id) & kFixed) != 0);
-        }
-        const auto report = oracle::check_planar(od, centers, radii, opt);
+        const auto report = test::check_with_oracle(p, *d);
         EXPECT_TRUE(report.ok()) << report.summary();
         Packing copy = p;
         const PlanarMesh mesh = constrained_delaunay(copy, boundary_loops(copy, *d));

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "disktune/mesh.h"
+#include "disktune/packing.h"
 #include "disktune/planar_domain.h"
 #include "oracle/planar_oracle.h"
 
@@ -24,6 +25,20 @@ inline oracle::Domain oracle_domain(const PlanarDomain& d) {
     for (const Vec2 v : loop) out.loops.back().push_back({v.x, v.y});
   }
   return out;
+}
+
+/// The independent oracle's verdict on a packing in a planar domain: each disk with its
+/// own radius, its boundary flag as the packing marks it.
+inline oracle::PlanarReport check_with_oracle(const Packing& p, const PlanarDomain& d) {
+  oracle::Points centers;
+  std::vector<double> radii;
+  oracle::PlanarOptions opt;
+  for (const DiskId id : p.ids()) {
+    centers.push_back({p.center(id).x, p.center(id).y});
+    radii.push_back(p.radius(id));
+    opt.boundary_flags.push_back((p.flags(id) & kFixed) != 0);
+  }
+  return oracle::check_planar(oracle_domain(d), centers, radii, opt);
 }
 
 /// The mesh must tile the domain exactly: triangle areas sum to the shoelace area

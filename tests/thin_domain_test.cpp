@@ -33,15 +33,7 @@ std::shared_ptr<const PlanarDomain> strip(double length, double width) {
 }
 
 void expect_valid(const Packing& p, const PlanarDomain& d) {
-  oracle::Points centers;
-  std::vector<double> radii;
-  oracle::PlanarOptions opt;
-  for (const DiskId id : p.ids()) {
-    centers.push_back({p.center(id).x, p.center(id).y});
-    radii.push_back(p.radius(id));
-    opt.boundary_flags.push_back((p.flags(id) & kFixed) != 0);
-  }
-  const auto report = oracle::check_planar(test::oracle_domain(d), centers, radii, opt);
+  const auto report = test::check_with_oracle(p, d);
   EXPECT_TRUE(report.ok()) << report.summary();
 }
 

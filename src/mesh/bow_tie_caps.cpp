@@ -125,6 +125,19 @@ std::vector<Tri> clip_ears(const std::vector<Vec3>& p, std::vector<std::uint32_t
 
 }  // namespace
 
+void replace_fan(SurfaceMesh& mesh, const std::vector<std::size_t>& fan, const std::vector<Tri>& cap) {
+  std::vector<bool> gone(mesh.triangles.size(), false);
+  for (const std::size_t t : fan) gone[t] = true;
+  std::size_t kept = 0;
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+    if (!gone[t]) mesh.triangles[kept++] = mesh.triangles[t];
+  mesh.triangles.resize(kept);
+  for (Tri t : cap) {
+    std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+    mesh.triangles.push_back(t);
+  }
+}
+
 std::size_t cap_bow_ties(SurfaceMesh& mesh) {
   std::size_t caps = 0;
   for (bool changed = true; changed;) {
@@ -163,16 +176,7 @@ std::size_t cap_bow_ties(SurfaceMesh& mesh) {
           if (!rim_edges.count(e)) fresh &= !edges.count(e);  // a diagonal must be a new edge
         }
       if (!fresh) continue;
-      std::vector<bool> gone(mesh.triangles.size(), false);
-      for (const std::size_t t : cone.triangles) gone[t] = true;
-      std::size_t kept = 0;
-      for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
-        if (!gone[t]) mesh.triangles[kept++] = mesh.triangles[t];
-      mesh.triangles.resize(kept);
-      for (Tri t : cap) {  // smallest index first, as the mesh's other triangles
-        std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
-        mesh.triangles.push_back(t);
-      }
+      replace_fan(mesh, cone.triangles, cap);
       ++caps;
       changed = true;
     }

@@ -2,6 +2,11 @@
 // Repair of bow-tie vertices in a restricted Delaunay mesh (internal; issue #15).
 #pragma once
 
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
 #include "disktune/surface_mesh.h"
 
 namespace disktune::detail {
@@ -15,5 +20,10 @@ namespace disktune::detail {
 /// the rim's orientation, so every rim edge keeps two triangles. Nothing changes unless
 /// the cap's diagonals and triangles are new to the mesh. Returns the caps made.
 std::size_t cap_bow_ties(SurfaceMesh& mesh);
+
+/// The triangles `fan` (indices into mesh.triangles) give way to `cap`, each cap triangle
+/// turned to start at its smallest index as the mesh's others do. The repairs' last step.
+void replace_fan(SurfaceMesh& mesh, const std::vector<std::size_t>& fan,
+                 const std::vector<std::array<std::uint32_t, 3>>& cap);
 
 }  // namespace disktune::detail

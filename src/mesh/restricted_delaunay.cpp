@@ -236,16 +236,7 @@ void cap_fans_across_creases(SurfaceMesh& mesh, const std::vector<std::array<std
         const int at = static_cast<int>(std::find(t.begin(), t.end(), rim[i]) - t.begin());
         cap.push_back(t[(at + 1) % 3] == rim[i + 1] ? Tri{a, rim[i], rim[i + 1]} : Tri{a, rim[i + 1], rim[i]});
       }
-      std::vector<bool> gone(mesh.triangles.size(), false);
-      for (const std::size_t t : across.triangles) gone[t] = true;
-      std::size_t kept = 0;
-      for (std::size_t i = 0; i < mesh.triangles.size(); ++i)
-        if (!gone[i]) mesh.triangles[kept++] = mesh.triangles[i];
-      mesh.triangles.resize(kept);
-      for (Tri t : cap) {
-        std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
-        mesh.triangles.push_back(t);
-      }
+      detail::replace_fan(mesh, across.triangles, cap);
       changed = true;
       break;
     }
