@@ -49,4 +49,7 @@ class TrianglePlane {
 void sphere_corners_in_triangle(const TrianglePlane& t, Vec3 c1, double r1, Vec3 c2, double r2,
                                 double tol, std::vector<Vec3>& out);
 
+/// The point of triangle abc closest to p.
+Vec3 closest_point_on_triangle(Vec3 p, Vec3 a, Vec3 b, Vec3 c);
+
 }  // namespace disktune
