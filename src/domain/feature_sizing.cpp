@@ -12,7 +12,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <cstdio>
 #include <limits>
 #include <memory>
 #include <sstream>
@@ -161,6 +160,7 @@ std::vector<Site> feature_sites(const PlanarDomain& domain, double r_max) {
 
 Sizing feature_sizing(std::shared_ptr<const PlanarDomain> domain, double r_max, double gradation) {
   using detail::number_text;
+  using detail::short_text;
   const std::string params = "r_max = " + number_text(r_max) + ", gradation " + number_text(gradation);
   if (!domain) throw InvalidInput("feature sizing (" + params + ") needs a planar domain");
   if (!std::isfinite(r_max) || !(r_max > 0) || !std::isfinite(gradation) || !(gradation > 0) ||
@@ -175,11 +175,6 @@ Sizing feature_sizing(std::shared_ptr<const PlanarDomain> domain, double r_max, 
     if (site.r < smallest.r) smallest = site;
   const auto tree = std::make_shared<const SiteTree>(std::move(sites), r_max, gradation);
   // Where the radius is smallest: what a refusal for the job's size should point at.
-  const auto short_text = [](double v) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.3g", v);
-    return std::string(text);
-  };
   std::string description = "feature sizing min(" + number_text(r_max) + ", " + number_text(kFeatureShare) +
                             " lfs graded at " + number_text(gradation) + "), smallest " + short_text(smallest.r);
   if (smallest.r < r_max) description += " near (" + short_text(smallest.p.x) + ", " + short_text(smallest.p.y) + ")";

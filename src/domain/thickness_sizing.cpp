@@ -12,7 +12,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdio>
 #include <cstdint>
 #include <map>
 #include <string>
@@ -94,16 +93,11 @@ class TriangleCells {
   std::map<std::array<std::int64_t, 3>, std::vector<std::uint32_t>> cells_;
 };
 
-std::string short_text(double v) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3g", v);
-  return text;
-}
-
 }  // namespace
 
 SurfaceSizing thickness_sizing(const SurfaceDomain& domain, double r_max, double gradation) {
   using detail::number_text;
+  using detail::short_text;
   if (!std::isfinite(r_max) || !(r_max > 0) || !std::isfinite(gradation) || !(gradation > 0) || !(gradation < 0.5)) {
     throw InvalidInput("thickness sizing with r_max = " + number_text(r_max) + ", gradation " + number_text(gradation) +
                        " is not valid: it needs r_max > 0 and 0 < gradation < 0.5 (e.g. auto:0.02 or auto:0.02,0.3)");

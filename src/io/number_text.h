@@ -5,6 +5,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <initializer_list>
 #include <ostream>
 #include <sstream>
@@ -28,6 +29,14 @@ inline void put_numbers(std::ostream& out, std::initializer_list<double> values,
     put_number(out, v);
     sep = separator;
   }
+}
+
+/// Three significant digits ("4.5e-07", "0.0141"), for a figure in a message or a
+/// description, where every digit (number_text) would only distract.
+inline std::string short_text(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g", v);
+  return buf;
 }
 
 inline std::string number_text(double v) {
