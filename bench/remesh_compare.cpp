@@ -14,8 +14,9 @@
 //
 // Given a planar domain (.poly) instead, the peer is CGAL's Mesh_2 refinement and Lloyd
 // optimizer (cvt_reference_mesh, at most --iterations Lloyd iterations, default 100),
-// and disktune samples at the radius whose packing of N disks has eta 0.70 (as remesh
-// does on a surface), injects to exactly N and takes the constrained Delaunay mesh.
+// and disktune samples at the radius whose packing of N disks has remesh's area fraction
+// (RemeshOptions), tunes to exactly N, relaxes as remesh does on a surface and takes the
+// constrained Delaunay mesh.
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
 #include <CGAL/Polygon_mesh_processing/detect_features.h>
@@ -44,6 +45,7 @@
 #include "disktune/sampling.h"
 #include "disktune/tuning.h"
 #include "disktune/quality.h"
+#include "disktune/density.h"
 #include "disktune/remesh.h"
 #include "disktune/restricted_delaunay.h"
 #include "disktune/surface_domain.h"
@@ -247,11 +249,12 @@ void print_planar_row(const std::string& tool, const disktune::PlanarMesh& mesh,
 int compare_planar(const Args& args) {
   const disktune::PlanarDomain domain = disktune::read_poly(args.path);
   const auto shared = std::make_shared<const disktune::PlanarDomain>(domain);
-  const double eta = 0.70, n = static_cast<double>(args.vertices);
+  const disktune::RemeshOptions defaults;  // the surface's remesh: its density and relaxation
+  const double eta = defaults.area_fraction, n = static_cast<double>(args.vertices);
   const double radius = std::sqrt(4 * eta * domain.area() / (n * 3.14159265358979323846));
   if (!domain.corners_fit(radius)) {
-    std::fprintf(stderr, "disktune-remesh-compare: r = %g (eta 0.70 at %zu disks) is too large for the corners of %s; "
-                 "ask for more vertices\n", radius, args.vertices, args.path.c_str());
+    std::fprintf(stderr, "disktune-remesh-compare: r = %g (eta %.2f at %zu disks) is too large for the corners of %s; "
+                 "ask for more vertices\n", radius, eta, args.vertices, args.path.c_str());
     return 1;
   }
   const auto t0 = Clock::now();
@@ -259,6 +262,8 @@ int compare_planar(const Args& args) {
   disktune::Packing packing = disktune::sample_mps(shared, radius, rng);
   const std::size_t sampled = packing.size();
   const disktune::TuneResult tuned = disktune::tune(packing, *shared, disktune::Target::count(args.vertices), rng);
+  const double spacing = 1 / disktune::relative_radius_for(n / disktune::density_unit(packing, domain.area()));
+  for (int k = 0; k < defaults.relax_sweeps; ++k) disktune::relax(packing, spacing, rng);
   const disktune::PlanarMesh ours =
       disktune::constrained_delaunay(packing, disktune::boundary_loops(packing, *shared));
   const double our_seconds = since(t0);
@@ -275,7 +280,7 @@ int compare_planar(const Args& args) {
   std::printf("| tool | vertices | min angle | max angle | angles in [50,70] | obtuse triangles | local beta max "
               "| time (s) |\n");
   std::printf("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n");
-  print_planar_row("disktune sample + tune + constrained Delaunay", ours, radius, our_seconds);
+  print_planar_row("disktune sample + tune + relax + constrained Delaunay", ours, radius, our_seconds);
   print_planar_row("CGAL Mesh_2 + Lloyd", cgal.mesh, radius, cgal_seconds);
   std::printf("\nNotes:\n- Times are wall clock, reading excluded; CGAL's includes its size calibration "
               "(refinement %.3f s for the kept one, Lloyd %.3f s).\n- Angle fractions are of all triangle "

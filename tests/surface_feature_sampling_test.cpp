@@ -283,6 +283,13 @@ int sweep_seeds() {
   return v ? std::max(1, std::atoi(v)) : 50;
 }
 
+// The first seed of the full sweep: 1, or DISKTUNE_SWEEP_FIRST_SEED (to split a long
+// sweep into runs, say seeds 1-25 and 26-50 on two cores).
+int first_sweep_seed() {
+  const char* v = std::getenv("DISKTUNE_SWEEP_FIRST_SEED");
+  return full_sweep() && v ? std::max(1, std::atoi(v)) : 1;
+}
+
 // The surfaces of issue #15, item 2, at radii where a sample has 1-3 thousand disks.
 struct TopologyCase {
   const char* file;
@@ -332,17 +339,20 @@ TEST(FeatureMeshing, ThicknessSizingMeshesCoarseSamplesWithTheInputsTopology) {
 // Four seeds a surface here, fifty in tests/invariant_sweep.sh.
 TEST(FeatureMeshing, SampleMeshesHaveTheInputsTopologyOverSeeds) {
   const int seeds = full_sweep() ? sweep_seeds() : 4;
+  const int first = first_sweep_seed();
   for (const TopologyCase& c : kTopologyCases) {
     const auto surface = with_features(*test::surface_file(c.file));
     const oracle::TopologyReport want = input_topology(*surface);
     ASSERT_TRUE(want.manifold()) << c.file;
     int good = 0;
-    for (int seed = 1; seed <= seeds; ++seed) {
+    for (int seed = first; seed < first + seeds; ++seed) {
       Rng rng(static_cast<std::uint64_t>(seed));
       const SurfacePacking p = sample_mps(surface, SurfaceSizing::constant(c.r), rng);
       good += has_topology(p, want, std::string(c.file) + " seed " + std::to_string(seed));
     }
-    std::printf("[ features ] %s r %g: %d of %d sample meshes have the input's topology\n", c.file, c.r, good, seeds);
+    std::printf("[ features ] %s r %g, seeds %d-%d: %d of %d sample meshes have the input's topology\n", c.file, c.r,
+                first, first + seeds - 1, good, seeds);
+    std::fflush(stdout);
   }
 }
 
@@ -353,12 +363,13 @@ TEST(FeatureMeshing, SampleMeshesHaveTheInputsTopologyOverSeeds) {
 // judged then, and the count printed.
 TEST(FeatureMeshing, TunedMeshesHaveTheInputsTopologyOverSeeds) {
   const int seeds = full_sweep() ? sweep_seeds() : 1;
+  const int first = first_sweep_seed();
   for (const TopologyCase& c : kTopologyCases) {
     const auto surface = with_features(*test::surface_file(c.file));
     const oracle::TopologyReport want = input_topology(*surface);
     for (const double factor : {full_sweep() ? 0.6 : 0.7, 1.4}) {
       int good = 0, reached = 0;
-      for (int seed = 1; seed <= seeds; ++seed) {
+      for (int seed = first; seed < first + seeds; ++seed) {
         Rng rng(static_cast<std::uint64_t>(seed));
         SurfacePacking p = sample_mps(surface, SurfaceSizing::constant(c.r), rng);
         const auto goal = static_cast<std::size_t>(std::lround(factor * static_cast<double>(p.size())));
@@ -367,8 +378,10 @@ TEST(FeatureMeshing, TunedMeshesHaveTheInputsTopologyOverSeeds) {
         reached += tune(p, Target::count(goal), rng).reached;
         good += has_topology(p, want, what);
       }
-      std::printf("[ features ] %s r %g tuned to %.1fx (reached %d of %d): %d of %d meshes have the input's topology\n",
-                  c.file, c.r, factor, reached, seeds, good, seeds);
+      std::printf("[ features ] %s r %g, seeds %d-%d, tuned to %.1fx (reached %d of %d): %d of %d meshes have the "
+                  "input's topology\n",
+                  c.file, c.r, first, first + seeds - 1, factor, reached, seeds, good, seeds);
+      std::fflush(stdout);
     }
   }
 }

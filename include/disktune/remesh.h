@@ -19,8 +19,15 @@ namespace disktune {
 struct RemeshOptions {
   /// The density the vertices end at: the radius is the one at which `vertex_count`
   /// disks make this area fraction (radius_for_count), so a maximal sample (about
-  /// 0.547) is tuned up to it by injection (or down, below 0.547, by ejection).
-  double area_fraction = 0.70;
+  /// 0.547) is tuned up to it by injection (or down, below 0.547, by ejection). Where
+  /// the sample at that radius has more disks than asked (fixed disks on many features
+  /// make it denser), the radius grows until it has fewer, and the density ends a
+  /// little higher. Near the sample's own density relaxation has the most room.
+  double area_fraction = 0.55;
+  /// Relaxation sweeps after the count is reached (relax, surface_tuning.h): the disks
+  /// move toward a hexagonal spacing while the packing stays conflict-free and maximal,
+  /// which makes the triangles closer to equilateral; 0: none.
+  int relax_sweeps = 30;
   std::uint64_t seed = 1;
   /// Sharp edges to keep: where the surface has no features set (SurfaceDomain::
   /// set_features), its edges folding by more than this many degrees become feature
@@ -45,9 +52,9 @@ struct RemeshResult {
 };
 
 /// Samples `surface` at the radius for `vertex_count` vertices, tunes the count to
-/// exactly that and meshes the result. Same seed, same mesh. Throws InvalidInput for
+/// exactly that, relaxes the packing and meshes the result. Same seed, same mesh. Throws InvalidInput for
 /// fewer than 4 vertices, an area fraction outside (0, 0.9069], a feature angle outside
-/// [0, 180), or more vertices than memory can hold; Cancelled when the progress callback
+/// [0, 180), a negative number of relaxation sweeps, or more vertices than memory can hold; Cancelled when the progress callback
 /// cancels.
 RemeshResult remesh(std::shared_ptr<const SurfaceDomain> surface, std::size_t vertex_count,
                     const RemeshOptions& options = {});

@@ -54,6 +54,8 @@ std::size_t repeller_inject(SurfacePacking& packing, DiskId p, Rng& rng, std::si
 std::size_t sift_eject(SurfacePacking& packing, DiskId p, Rng& rng, std::size_t max_removed);
 std::size_t attractor_eject(SurfacePacking& packing, DiskId p, Rng& rng, std::size_t max_removed);
 std::size_t wide_attractor_eject(SurfacePacking& packing, DiskId p, Rng& rng, std::size_t max_removed);
+/// Relaxation on a surface (tuning.h): each step in the tangent plane at the disk.
+std::size_t relax(SurfacePacking& packing, double spacing, Rng& rng);
 
 /// Crystal growth on the surface (one radius only): a crystal of frozen disks at spacing
 /// r (injection) or sqrt(3) r (ejection) grows over the surface, its sites the points at

@@ -52,7 +52,8 @@ enum class Phase {
   attractor_ejection,
   crystal_ejection,
   boundary_injection,  // 1D steps on a planar domain's boundary: the automatic schedule's last
-  boundary_ejection
+  boundary_ejection,
+  relaxation  // disks moved, none added or removed (relax; remesh runs it after tuning)
 };
 std::string to_string(Phase phase);
 
@@ -184,6 +185,14 @@ std::size_t attractor_eject(Packing& packing, DiskId p, Rng& rng, std::size_t ma
 /// the one-ring attractor has stalled (the automatic schedule's last ejection phase),
 /// at about four times its cost per operation.
 std::size_t wide_attractor_eject(Packing& packing, DiskId p, Rng& rng, std::size_t max_removed);
+
+/// Relaxation (keeps the count): one sweep over the free disks in random order, each
+/// pulled toward where spring forces from the disks within 1.5 rest lengths put it
+/// (bubble packing; the rest length is `spacing` times the disk's radius, 1/rho for the
+/// hexagonal spacing of the packing's density), stopping where it would meet another
+/// disk or leave part of its own void uncovered. The packing stays conflict-free and
+/// maximal. Returns how many disks moved; throws InvalidInput for a spacing <= 0.
+std::size_t relax(Packing& packing, double spacing, Rng& rng);
 
 /// Injection for angles (2.4), one sweep: the circumcenter of every obtuse triangle of
 /// the periodic Delaunay triangulation, in random order, is used as a repeller point

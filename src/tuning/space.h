@@ -25,6 +25,10 @@
 //                    while it covers its own void and meets no disk but `passable`'s
 //   for_each_near(P, c, R, f), any_near(P, c, R, pred)  neighbours (Near, with d2)
 //   inside(P, x)     x lies in the domain (a surface's points always do)
+//   near_of(P, p)    disk p as a Near (its own center as the image)
+//   along_surface(P, p, v)  v without its part along the surface normal at disk p
+//   one_radius(P)    every disk has the same radius (no sizing)
+//   project(P, p, y, x)  the point x of the domain nearest y, a step from disk p, or false
 //   stable_order(ids)  sorts ids where the grid's visiting order is not reproducible
 // and, for crystal growth (lattice spacing s):
 //   for_each_site(P, a, ia, b, ib, s, f)  the points at distance s from centers a and b
@@ -109,6 +113,13 @@ struct Space<Packing> {
     return packing.any_near(c, R, std::forward<Pred>(pred));
   }
   static bool inside(const Packing& packing, Point x) { return packing.inside(x); }
+  static Near near_of(const Packing& packing, DiskId p) { return {p, packing.center(p), 0.0, packing.radius(p)}; }
+  static Location along_surface(const Packing& /*packing*/, DiskId /*p*/, Location v) { return v; }
+  static bool one_radius(const Packing& packing) { return !packing.sizing(); }
+  static bool project(const Packing& packing, DiskId /*p*/, Location y, Point& x) {
+    x = y;
+    return packing.inside(y);
+  }
   static void stable_order(std::vector<DiskId>& /*ids*/) {}  // the flat grid's order is fixed
 
   template <class F>
@@ -218,6 +229,30 @@ struct Space<SurfacePacking> {
     });
   }
   static bool inside(const SurfacePacking& /*packing*/, const Point& /*x*/) { return true; }  // made on it
+  static Near near_of(const SurfacePacking& packing, DiskId p) {
+    return {p, packing.center(p), 0.0, packing.radius(p)};
+  }
+  static Location along_surface(const SurfacePacking& packing, DiskId p, Location v) {
+    const Vec3 n = packing.index().plane(packing.point(p).triangle).normal();
+    return v - n * dot(v, n);
+  }
+  static bool one_radius(const SurfacePacking& packing) { return packing.sizing().is_constant(); }
+  // Nearest among the triangles facing the same way as p's (within 60 degrees), so that
+  // a step never lands on a sheet across a thin part.
+  static bool project(const SurfacePacking& packing, DiskId p, Location y, Point& x) {
+    const SurfaceIndex& index = packing.index();
+    const Vec3 n = index.plane(packing.point(p).triangle).normal();
+    std::vector<std::uint32_t> tris;
+    index.triangles_near(y, norm(y - packing.center(p)) + 1e-9 * packing.radius(p), tris);
+    double best = 1e300;
+    for (const std::uint32_t t : tris) {
+      if (dot(index.plane(t).normal(), n) < 0.5) continue;
+      const Vec3 q = index.closest_point(t, y);
+      const double d2 = squared_norm(q - y);
+      if (d2 < best) best = d2, x = Point{q, t};
+    }
+    return best < 1e300;
+  }
   // The hashed grid visits cells in an order a rehash changes.
   static void stable_order(std::vector<DiskId>& ids) { std::sort(ids.begin(), ids.end()); }
 

@@ -79,6 +79,7 @@ std::string to_string(Phase phase) {
     case Phase::crystal_ejection: return "crystal ejection";
     case Phase::boundary_injection: return "boundary injection";
     case Phase::boundary_ejection: return "boundary ejection";
+    case Phase::relaxation: return "relaxation";
   }
   return "?";
 }

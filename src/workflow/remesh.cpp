@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "disktune/remesh.h"
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,10 @@ RemeshResult remesh(std::shared_ptr<const SurfaceDomain> surface, std::size_t ve
     throw InvalidInput("remesh: the feature angle must be in [0, 180) degrees (0: no features), got " +
                        std::to_string(options.feature_angle));
   }
+  if (options.relax_sweeps < 0) {
+    throw InvalidInput("remesh: the number of relaxation sweeps must be 0 or more, got " +
+                       std::to_string(options.relax_sweeps));
+  }
   const SurfaceFeatures& given = surface->features();
   if (options.feature_angle > 0 && given.curves.empty() && given.corners.empty()) {
     auto with_features = std::make_shared<SurfaceDomain>(*surface);
@@ -45,7 +50,25 @@ RemeshResult remesh(std::shared_ptr<const SurfaceDomain> surface, std::size_t ve
   }
   Rng rng(options.seed);
   SurfacePacking packing = sample_mps(surface, sizing, rng);
+  // Disks fixed on features and boundaries can make the sample denser than asked, and
+  // then more than the count: sample again at a radius that gives a little less, so that
+  // the count is reached by injection (ejection is the slow way, and near the sample's
+  // own density it can stall).
+  if (packing.size() > vertex_count) {
+    out.radius *= std::sqrt(1.03 * static_cast<double>(packing.size()) / static_cast<double>(vertex_count));
+    packing = sample_mps(surface, SurfaceSizing::constant(out.radius), rng);
+  }
   out.tuning = tune(packing, Target::count(vertex_count), rng, options.tune);
+  // The rest length of the springs: the hexagonal spacing of the count reached.
+  const double spacing = 1 / relative_radius_for(static_cast<double>(packing.size()) / density_unit(packing));
+  const Progress progress{packing.size(), static_cast<double>(packing.size()) / density_unit(packing),
+                          Phase::relaxation};
+  for (int k = 0; k < options.relax_sweeps; ++k) {
+    relax(packing, spacing, rng);
+    if (options.tune.on_progress && !options.tune.on_progress(progress)) {
+      throw Cancelled("remesh: cancelled by the progress callback during relaxation");
+    }
+  }
 
   out.mesh = restricted_delaunay(packing);
   out.check = check_surface_mesh(out.mesh);

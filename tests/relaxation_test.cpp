@@ -1,0 +1,200 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Relaxation (relax): disks move, none is added or removed, fixed disks stay put, and
+// after every sweep the independent oracles find the packing conflict-free and maximal;
+// and it does what it is for: the mesh's angles, measured here by plain geometry on a
+// brute-force Delaunay triangulation (torus) or on the restricted Delaunay mesh's
+// coordinates (surface), come much closer to 60 degrees.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "brute_delaunay.h"
+#include "disktune/density.h"
+#include "disktune/planar_domain.h"
+#include "disktune/restricted_delaunay.h"
+#include "disktune/sampling.h"
+#include "disktune/sizing.h"
+#include "disktune/surface_features.h"
+#include "disktune/surface_sampling.h"
+#include "disktune/surface_sizing.h"
+#include "disktune/surface_tuning.h"
+#include "disktune/tuning.h"
+#include "oracle/mesh_topology.h"
+#include "oracle/oracle.h"
+#include "planar_checks.h"
+#include "surface_checks.h"
+#include "test_util.h"
+
+namespace disktune {
+namespace {
+
+// The rest length remesh uses: the hexagonal spacing of the packing's own density.
+double hex_spacing(double eta) { return 1 / relative_radius_for(eta); }
+
+// Fraction of the angles within [50, 70] degrees, and of the triangles with one above 90.
+struct AngleShare {
+  double near_60 = 0, obtuse = 0;
+};
+
+AngleShare torus_angles(const Packing& p, double W, double H, double r) {
+  std::vector<test::BrutePoint> pts;
+  for (const DiskId id : p.ids()) pts.push_back({p.center(id).x, p.center(id).y});
+  const auto tris = test::brute_periodic_delaunay(pts, W, H, 2.2 * r);
+  double area = 0;
+  std::size_t near = 0, obtuse = 0;
+  for (const auto& t : tris) {
+    const auto& c = t.corners;
+    area += 0.5 * ((c[1].x - c[0].x) * (c[2].y - c[0].y) - (c[1].y - c[0].y) * (c[2].x - c[0].x));
+    bool wide = false;
+    for (const double a : test::brute_angles_degrees(c)) near += a >= 50 && a <= 70, wide = wide || a > 90;
+    obtuse += wide;
+  }
+  EXPECT_NEAR(area, W * H, 1e-9) << "the brute force missed triangles";
+  return {static_cast<double>(near) / (3.0 * tris.size()), static_cast<double>(obtuse) / tris.size()};
+}
+
+AngleShare surface_angles(const SurfaceMesh& m) {
+  std::size_t near = 0, obtuse = 0;
+  for (const auto& t : m.triangles) {
+    bool wide = false;
+    for (int k = 0; k < 3; ++k) {
+      const Vec3 a = m.vertices[t[k]], b = m.vertices[t[(k + 1) % 3]], c = m.vertices[t[(k + 2) % 3]];
+      const Vec3 u = b - a, v = c - a;
+      const double deg = std::acos(dot(u, v) / std::sqrt(dot(u, u) * dot(v, v))) * 180 / 3.14159265358979323846;
+      near += deg >= 50 && deg <= 70;
+      wide = wide || deg > 90;
+    }
+    obtuse += wide;
+  }
+  return {static_cast<double>(near) / (3.0 * m.triangles.size()), static_cast<double>(obtuse) / m.triangles.size()};
+}
+
+TEST(Relaxation, KeepsATorusPackingValidAndMakesItsAnglesCloserTo60) {
+  const double W = 1, H = 1, r = 0.05;
+  for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+    const PeriodicBox box(W, H);
+    Rng rng(seed);
+    Packing p = sample_mps(box, r, rng);
+    const std::size_t n = p.size();
+    const double spacing = hex_spacing(area_fraction(n, r, W * H));
+    const AngleShare before = torus_angles(p, W, H, r);
+    for (int sweep = 1; sweep <= 20; ++sweep) {
+      relax(p, spacing, rng);
+      ASSERT_EQ(p.size(), n);
+      const auto rep = oracle::check_all(test::box_of(box), r, test::centers_of(p), 1e-6, 3000, seed);
+      ASSERT_TRUE(rep.conflict_free() && rep.maximal()) << "seed " << seed << " sweep " << sweep << ": " << rep.summary();
+    }
+    const AngleShare after = torus_angles(p, W, H, r);
+    std::printf("[ relax ] torus r %g seed %llu, %zu disks: angles in [50,70] %.3f -> %.3f, obtuse %.3f -> %.3f\n", r,
+                static_cast<unsigned long long>(seed), n, before.near_60, after.near_60, before.obtuse, after.obtuse);
+    EXPECT_GT(after.near_60, before.near_60 + 0.2) << "seed " << seed;
+    EXPECT_LT(after.obtuse, before.obtuse / 2) << "seed " << seed;
+  }
+}
+
+// One radius, and a sizing (the feature sizing, smaller near the notch and the holes),
+// where a disk's radius changes as it moves.
+TEST(Relaxation, KeepsAPlanarDomainsBoundaryDisksAndItsPackingValid) {
+  const auto domain =
+      std::make_shared<const PlanarDomain>(read_poly(std::string(DISKTUNE_DATA_DIR) + "/domains/notch_and_holes.poly"));
+  const auto sizing = std::make_shared<const Sizing>(parse_sizing("auto:0.04", domain));
+  for (const bool sized : {false, true}) {
+    for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+      Rng rng(seed);
+      Packing p = sized ? sample_mps(domain, sizing, rng) : sample_mps(domain, 0.03, rng);
+      const std::size_t n = p.size();
+      std::map<DiskId, Vec2> fixed;
+      for (const DiskId id : p.ids())
+        if (p.flags(id) & kFixed) fixed[id] = p.center(id);
+      ASSERT_FALSE(fixed.empty());
+      const double spacing = hex_spacing(static_cast<double>(n) / density_unit(p, domain->area()));
+      std::size_t moved = 0;
+      for (int sweep = 1; sweep <= 10; ++sweep) {
+        moved += relax(p, spacing, rng);
+        ASSERT_EQ(p.size(), n);
+        const oracle::PlanarReport rep = test::check_with_oracle(p, *domain);
+        ASSERT_TRUE(rep.ok()) << (sized ? "auto:0.04" : "r 0.03") << " seed " << seed << " sweep " << sweep << ": "
+                              << rep.summary();
+      }
+      EXPECT_GT(moved, n);  // most disks moved, some several times
+      for (const auto& [id, at] : fixed) {
+        ASSERT_TRUE(p.alive(id));
+        EXPECT_EQ(p.center(id).x, at.x);
+        EXPECT_EQ(p.center(id).y, at.y);
+      }
+    }
+  }
+}
+
+// On surfaces with sharp features (fixed disks on the curves): validity after every
+// sweep, fixed disks in place, the mesh still of the input's topology, and its angles
+// closer to 60 degrees.
+TEST(Relaxation, KeepsASurfacePackingValidItsFeaturesFixedAndItsMeshsTopology) {
+  // A radius, or a sizing (thickness: smaller where fandisk faces itself closely; the
+  // radii vary, and a third of the disks are fixed on its creases: a smaller gain).
+  struct Case {
+    const char* file;
+    const char* spec;
+    double gain;  // at least this much more of the angles in [50, 70]
+  };
+  const Case cases[] = {{"fandisk.off", "0.04", 0.15}, {"fandisk.off", "auto:0.05", 0.1}, {"elephant.off", "0.012", 0.25}};
+  for (const auto& [file, spec, gain] : cases) {
+    SurfaceDomain d = *test::surface_file(file);
+    d.set_features(detect_features(d, {60, 60}));
+    const auto surface = std::make_shared<const SurfaceDomain>(std::move(d));
+    const oracle::SurfaceMeshInput input = test::oracle_surface(*surface);
+    const oracle::TopologyReport want = oracle::check_topology(
+        input.vertices.size(), std::vector<std::array<std::size_t, 3>>(input.triangles.begin(), input.triangles.end()));
+    for (std::uint64_t seed = 1; seed <= 2; ++seed) {
+      Rng rng(seed);
+      SurfacePacking p = sample_mps(surface, parse_surface_sizing(spec, *surface), rng);
+      const std::size_t n = p.size();
+      std::map<DiskId, Vec3> fixed;
+      for (const DiskId id : p.ids())
+        if (p.flags(id) & kFixed) fixed[id] = p.center(id);
+      ASSERT_FALSE(fixed.empty());
+      const AngleShare before = surface_angles(restricted_delaunay(p));
+      const double spacing = hex_spacing(static_cast<double>(n) / density_unit(p));
+      for (int sweep = 1; sweep <= 12; ++sweep) {
+        relax(p, spacing, rng);
+        ASSERT_EQ(p.size(), n);
+        const auto rep = test::surface_report(p);
+        ASSERT_TRUE(rep.ok()) << file << " " << spec << " seed " << seed << " sweep " << sweep << ": " << rep.summary();
+      }
+      for (const auto& [id, at] : fixed) {
+        ASSERT_TRUE(p.alive(id));
+        EXPECT_EQ(squared_norm(p.center(id) - at), 0.0);
+      }
+      const SurfaceMesh mesh = restricted_delaunay(p);
+      std::vector<std::array<std::size_t, 3>> tris;
+      for (const auto& t : mesh.triangles) tris.push_back({t[0], t[1], t[2]});
+      const oracle::TopologyReport got = oracle::check_topology(mesh.vertices.size(), tris);
+      EXPECT_TRUE(got.manifold() && got.genus == want.genus && got.boundary_loops == want.boundary_loops)
+          << file << " " << spec << " seed " << seed << ": " << got.summary();
+      const AngleShare after = surface_angles(mesh);
+      std::printf("[ relax ] %s %s seed %llu, %zu disks: angles in [50,70] %.3f -> %.3f, obtuse %.3f -> %.3f\n", file,
+                  spec, static_cast<unsigned long long>(seed), n, before.near_60, after.near_60, before.obtuse,
+                  after.obtuse);
+      EXPECT_GT(after.near_60, before.near_60 + gain) << file << " " << spec << " seed " << seed;
+      EXPECT_LT(after.obtuse, 0.6 * before.obtuse) << file << " " << spec << " seed " << seed;
+    }
+  }
+}
+
+TEST(Relaxation, RefusesASpacingThatIsNotPositive) {
+  const PeriodicBox box(1, 1);
+  Rng rng(1);
+  Packing p = sample_mps(box, 0.1, rng);
+  EXPECT_THROW(relax(p, 0, rng), InvalidInput);
+  EXPECT_THROW(relax(p, -1, rng), InvalidInput);
+  EXPECT_THROW(relax(p, std::nan(""), rng), InvalidInput);
+}
+
+}  // namespace
+}  // namespace disktune
