@@ -304,6 +304,21 @@ expect features-flat 2 "--features applies to curved surfaces only" -- "$bin" sa
 expect surface-boundary 0 "[0-9]+ disks \([0-9]+ on the boundary\), .*1 boundary loop with 4 corners" -- "$bin" sample --domain "$data/surfaces/mesh_with_border.off" --radius 4 --output mb.csv
 expect surface-boundary-read 0 "[0-9]+ disks \([1-9][0-9]* on the boundary\), .*maximal, conflict-free" -- "$bin" report mb.csv --domain "$data/surfaces/mesh_with_border.off" --radius 4
 expect flat-off-is-planar 0 "planar domain .*square_with_hole\.off" -- "$bin" sample --domain "$data/domains/square_with_hole.off" --radius 0.05
+# remesh: a surface in, exactly N vertices out (OFF header counted here), the sharp edges
+# kept as OBJ lines, the report as JSON; bad input refused before any file is written.
+expect remesh 0 "^remesh: 2000 vertices \(as asked\), [0-9]+ triangles, [1-9][0-9]* edges along feature curves, manifold yes, genus 0 \(input genus 0\), angles 3[0-9]\.[0-9]+\.\.[0-9.]+ deg, [0-9.]+ % in \[50,70\]" -- "$bin" remesh "$fandisk" --vertices 2000 -o re.obj --json re.json
+grep -q "^l [0-9]* [0-9]*$" re.obj && pass=$((pass + 1)) || { echo "FAIL remesh feature lines"; fails=$((fails + 1)); }
+grep -q '"vertices": 2000,' re.json && grep -q '"relax_sweeps": 30' re.json && grep -q '"manifold": true' re.json &&
+  pass=$((pass + 1)) || { echo "FAIL remesh json"; fails=$((fails + 1)); }
+expect remesh-off 0 "^remesh: 1500 vertices \(as asked\), .*genus 2 \(input genus 2\)" -- "$bin" remesh "$data/surfaces/eight.off" -n 1500 -o re.off --features none --relax 5 --seed 7
+[ "$(sed -n 2p re.off | cut -d' ' -f1)" = 1500 ] && pass=$((pass + 1)) || { echo "FAIL remesh OFF vertex count"; fails=$((fails + 1)); }
+expect remesh-flat 2 "remesh: .*square_with_hole\.off is flat .*run sample, tune and mesh with --domain" -- "$bin" remesh "$data/domains/square_with_hole.off" -n 500 -o never.off
+expect remesh-few 2 "--vertices 3 is out of range: give 4 to" -- "$bin" remesh "$fandisk" -n 3 -o never.off
+expect remesh-format 2 "cannot tell the mesh format of 'never\.csv'" -- "$bin" remesh "$fandisk" -n 500 -o never.csv
+expect remesh-memory 2 "remesh: 5000000 vertices are too many for this surface: .*ask for at most about [0-9]+ vertices" -- "$bin" remesh "$fandisk" -n 5000000 -o never.off --max-memory 100M
+expect remesh-over-input 2 "is the file this command reads" -- "$bin" remesh "$fandisk" -n 500 -o "$fandisk"
+absent remesh-nothing-written never.off
+absent remesh-no-csv never.csv
 printf 'OFF\n5 2 0\n0 0 0\n1 0 0\n1 1 0.5\n0 1 0\n2 2 1\n4 0 1 2 3\n3 1 4 2\n' >quad.off
 expect surface-quad 2 "face 0 of quad\.off has 4 corners.*triangulate" -- "$bin" sample --domain quad.off --radius 0.1 --output never.csv
 absent surface-quad-output never.csv

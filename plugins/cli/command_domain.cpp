@@ -66,21 +66,6 @@ std::string lower_extension(const std::string& path) {
   return ext;
 }
 
-// The surface with the features --features asks for.
-std::shared_ptr<const SurfaceDomain> surface_with_features(const DomainArgs& args) {
-  SurfaceDomain surface = disktune::read_surface(args.kind);
-  if (args.features == "none") return std::make_shared<const SurfaceDomain>(std::move(surface));
-  char* end = nullptr;
-  const double angle = std::strtod(args.features.c_str(), &end);
-  if (args.features.empty() || *end != '\0' || !(angle > 0 && angle < 180)) {
-    throw InvalidInput("--features " + args.features +
-                       ": give a dihedral angle in degrees strictly between 0 and 180 (60 is the default), "
-                       "or 'none'");
-  }
-  surface.set_features(detect_features(surface, {angle, 60}));
-  return std::make_shared<const SurfaceDomain>(std::move(surface));
-}
-
 CommandDomain open_surface(const DomainArgs& args) {
   CommandDomain d;
   d.file = args.kind;
@@ -107,6 +92,21 @@ CommandDomain open_surface(const DomainArgs& args) {
 }
 
 }  // namespace
+
+// The surface with the features --features asks for.
+std::shared_ptr<const SurfaceDomain> surface_with_features(const DomainArgs& args) {
+  SurfaceDomain surface = disktune::read_surface(args.kind);
+  if (args.features == "none") return std::make_shared<const SurfaceDomain>(std::move(surface));
+  char* end = nullptr;
+  const double angle = std::strtod(args.features.c_str(), &end);
+  if (args.features.empty() || *end != '\0' || !(angle > 0 && angle < 180)) {
+    throw InvalidInput("--features " + args.features +
+                       ": give a dihedral angle in degrees strictly between 0 and 180 (60 is the default), "
+                       "or 'none'");
+  }
+  surface.set_features(detect_features(surface, {angle, 60}));
+  return std::make_shared<const SurfaceDomain>(std::move(surface));
+}
 
 bool names_surface(const DomainArgs& args) {
   if (args.kind == "periodic") return false;

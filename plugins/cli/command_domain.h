@@ -62,6 +62,10 @@ struct CommandDomain {
 /// place that decides; reads the file for .off and .obj.
 bool names_surface(const DomainArgs& args);
 
+/// The surface --domain names (args.kind), with the sharp features --features asks for
+/// (an angle in degrees, or "none"). Throws InvalidInput for a bad --features.
+std::shared_ptr<const SurfaceDomain> surface_with_features(const DomainArgs& args);
+
 /// Opens the domain named by the options (reads and validates a domain file, parses
 /// and checks the sizing, estimates what a sample needs). Throws InvalidInput unless
 /// exactly one of --radius and --sizing is given, and, for a command that samples or

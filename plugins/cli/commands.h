@@ -60,6 +60,7 @@ void add_tune_command(CLI::App& app, Action& action);
 void add_mesh_command(CLI::App& app, Action& action);
 void add_report_command(CLI::App& app, Action& action);
 void add_sweep_command(CLI::App& app, Action& action);
+void add_remesh_command(CLI::App& app, Action& action);
 
 /// One sampling job, as `disktune sample` and the demo run it.
 struct SampleJob {
@@ -106,6 +107,17 @@ struct SurfaceReportJob {
   int spectrum_window = 0;
 };
 int run_surface_report(const SurfaceReportJob& job);
+/// `disktune remesh`: a surface file in, a mesh of it with exactly `vertices` vertices
+/// out (remesh.h), its summary line, and optionally a JSON report.
+struct RemeshJob {
+  std::string input, output, json;
+  std::size_t vertices = 0;
+  std::string features = "60";
+  std::uint64_t seed = 1;
+  int relax_sweeps = 30;
+  double max_memory = 0;
+};
+int run_surface_remesh(const RemeshJob& job);
 
 /// The built-in default job, run by `disktune` with no arguments.
 int run_demo();

@@ -50,6 +50,7 @@ int main(int argc, char** argv) {
   add_mesh_command(app, action);
   add_report_command(app, action);
   add_sweep_command(app, action);
+  add_remesh_command(app, action);
 
   try {
     app.parse(argc, argv);

@@ -17,6 +17,7 @@
 #include "disktune/io.h"
 #include "disktune/quality.h"
 #include "disktune/quality_json.h"
+#include "disktune/remesh.h"
 #include "disktune/restricted_delaunay.h"
 #include "disktune/surface_io.h"
 #include "disktune/surface_mesh.h"
@@ -205,6 +206,18 @@ int run_surface_mesh(const std::string& input, const DomainArgs& domain_args,
   return kExitOk;
 }
 
+// The mesh check as JSON (report and remesh).
+std::string mesh_check_json(const SurfaceMeshCheck& c) {
+  std::ostringstream j;
+  j << "{\"manifold\": " << (c.manifold ? "true" : "false") << ", \"oriented\": " << (c.oriented ? "true" : "false")
+    << ", \"genus\": " << c.genus << ", \"components\": " << c.components
+    << ", \"boundary_edges\": " << c.boundary_edges << ", \"boundary_loops\": " << c.boundary_loops
+    << ", \"non_manifold_edges\": " << c.non_manifold_edges
+    << ", \"non_manifold_vertices\": " << c.non_manifold_vertices
+    << ", \"isolated_vertices\": " << c.isolated_vertices << ", \"problems\": " << json_string(c.problems) << "}";
+  return j.str();
+}
+
 // The report's JSON up to the mesh: the surface, the sizing and the packing's figures.
 std::string packing_json(const CommandDomain& domain, const SurfacePacking& packing, double eta, double rho,
                          bool maximal, bool conflict_free) {
@@ -279,14 +292,7 @@ int run_surface_report(const SurfaceReportJob& job) {
   if (!job.json.empty()) {
     std::ostringstream j;
     j << packing_json(domain, packing, eta, rho, maximal, conflict_free)
-      << "  \"mesh_check\": {\"manifold\": " << (m.check.manifold ? "true" : "false")
-      << ", \"oriented\": " << (m.check.oriented ? "true" : "false")
-      << ", \"genus\": " << m.check.genus << ", \"components\": " << m.check.components
-      << ", \"boundary_edges\": " << m.check.boundary_edges << ", \"boundary_loops\": " << m.check.boundary_loops
-      << ", \"non_manifold_edges\": " << m.check.non_manifold_edges
-      << ", \"non_manifold_vertices\": " << m.check.non_manifold_vertices
-      << ", \"isolated_vertices\": " << m.check.isolated_vertices
-      << ", \"problems\": " << json_string(m.check.problems) << "},\n"
+      << "  \"mesh_check\": " << mesh_check_json(m.check) << ",\n"
       << "  \"mesh\": " << quality_json(q) << "\n}\n";
     const std::string text = j.str();
     write_file_atomically(job.json, [&](std::ostream& out) { out << text; });
@@ -301,6 +307,77 @@ int run_surface_report(const SurfaceReportJob& job) {
       job.json.c_str());
   if (!m.check.problems.empty()) std::printf("report: %s\n", m.check.problems.c_str());
   warn_topology(m.check, surface, "measured");
+  return kExitOk;
+}
+
+int run_surface_remesh(const RemeshJob& job) {
+  check_files_apart({{"the surface", job.input}}, {{"--output", job.output}, {"--json", job.json}});
+  check_surface_mesh_path(job.output);  // fail before any work
+  check_output_folder(job.output);
+  if (!job.json.empty()) check_output_folder(job.json);
+  DomainArgs args;
+  args.kind = job.input;
+  args.features = job.features;
+  if (!names_surface(args)) {
+    throw InvalidInput("remesh: " + job.input +
+                       " is flat (every vertex has the same z) or not a mesh file: remesh takes a curved "
+                       "surface (.off, .obj, .ply, .stl); for a planar domain run sample, tune and mesh with "
+                       "--domain " + job.input);
+  }
+  const std::shared_ptr<const SurfaceDomain> surface = surface_with_features(args);
+  RemeshOptions options;
+  options.seed = job.seed;
+  options.relax_sweeps = job.relax_sweeps;
+  options.feature_angle = 0;  // the surface's own features, as --features set them
+  options.max_memory = job.max_memory;
+  const auto t0 = std::chrono::steady_clock::now();
+  RemeshResult result;
+  tune_with_progress(0, job.vertices, Method::automatic,
+                     [&](const TuneOptions& tune_options) {
+                       options.tune = tune_options;
+                       result = remesh(surface, job.vertices, options);
+                       return result.tuning;
+                     },
+                     "", [] {});
+  const double seconds = seconds_since(t0);
+  write_surface_mesh(job.output, result.mesh);
+  const std::vector<double> radius(result.mesh.vertices.size(), result.radius);
+  SurfaceMeshQuality q;
+  if (!result.mesh.triangles.empty()) {
+    q = measure_surface_mesh(result.mesh, radius);
+    q.hausdorff = hausdorff_distance(result.mesh, *surface, 10000, 1);
+  }
+  if (!job.json.empty()) {
+    std::ostringstream j;
+    j << "{\n  \"surface\": {\"file\": " << json_string(job.input) << ", \"vertices\": " << surface->vertices().size()
+      << ", \"triangles\": " << surface->triangles().size() << ", \"genus\": " << surface->genus()
+      << ", \"boundary_loops\": " << surface->boundary_loops().size()
+      << ", \"feature_curves\": " << surface->features().curves.size() << "},\n"
+      << "  \"vertices_asked\": " << job.vertices << ",\n  \"vertices\": " << result.mesh.vertices.size()
+      << ",\n  \"reached\": " << (result.tuning.reached ? "true" : "false")
+      << ",\n  \"radius\": " << json_number(result.radius) << ",\n  \"seed\": " << job.seed
+      << ",\n  \"features\": " << json_string(job.features) << ",\n  \"relax_sweeps\": " << job.relax_sweeps
+      << ",\n  \"seconds\": " << json_number(seconds) << ",\n  \"mesh_check\": " << mesh_check_json(result.check)
+      << ",\n  \"mesh\": " << (result.mesh.triangles.empty() ? std::string("null") : quality_json(q)) << "\n}\n";
+    const std::string text = j.str();
+    write_file_atomically(job.json, [&](std::ostream& out) { out << text; });
+  }
+  std::printf(
+      "remesh: %zu vertices (%s), %zu triangles, %zu edges along feature curves, %s, angles %.2f..%.2f deg, "
+      "%.1f %% in [50,70], %.2f %% obtuse triangles, Hausdorff %.4g, r = %.6g, %.3f s -> %s%s%s\n",
+      result.mesh.vertices.size(), result.tuning.reached ? "as asked" : "NOT as asked",
+      result.mesh.triangles.size(), result.mesh.feature_edges.size(), topology_text(result.check, *surface).c_str(),
+      q.angles.min, q.angles.max, 100 * q.angles.fraction_50_70, 100 * q.angles.fraction_obtuse_triangles,
+      q.hausdorff, result.radius, seconds, job.output.c_str(), job.json.empty() ? "" : ", ", job.json.c_str());
+  if (!result.check.problems.empty()) std::printf("remesh: %s\n", result.check.problems.c_str());
+  warn_topology(result.check, *surface, "written");
+  if (!result.tuning.reached) {
+    std::fprintf(stderr,
+                 "disktune: remesh reached %zu vertices, not %zu: tuning found no way to the exact count; the "
+                 "mesh of the closest packing was written\n",
+                 result.tuning.count, job.vertices);
+    return kExitNotReached;
+  }
   return kExitOk;
 }
 

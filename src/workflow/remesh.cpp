@@ -2,6 +2,7 @@
 #include "disktune/remesh.h"
 
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -40,13 +41,22 @@ RemeshResult remesh(std::shared_ptr<const SurfaceDomain> surface, std::size_t ve
   RemeshResult out;
   out.radius = radius_for_count(vertex_count, surface->area(), options.area_fraction);
   const SurfaceSizing sizing = SurfaceSizing::constant(out.radius);
+  const ResourceEstimate need = estimate_resources(*surface, sizing).tuned_to(static_cast<double>(vertex_count));
+  const double limit = options.max_memory > 0 ? options.max_memory : available_memory();
   try {
-    const ResourceEstimate need =
-        estimate_resources(*surface, sizing).tuned_to(static_cast<double>(vertex_count));
-    check_resources(need, options.max_memory > 0 ? options.max_memory : available_memory());
+    check_resources(need, limit);
   } catch (const InvalidInput& e) {
-    throw InvalidInput("remesh: " + std::to_string(vertex_count) + " vertices are too many: " + e.what(),
-                       e.remedy());
+    if (!(need.bytes > limit)) {
+      throw InvalidInput("remesh: " + std::to_string(vertex_count) + " vertices are too many: " + e.what(), e.remedy());
+    }
+    // The memory grows with the count: say how many would fit, not which radius.
+    char text[320];
+    std::snprintf(text, sizeof text,
+                  "remesh: %zu vertices are too many for this surface: their packing needs about %.3g GiB but "
+                  "%.3g GiB are allowed; ask for at most about %.0f vertices, or allow more memory",
+                  vertex_count, need.bytes / 1073741824.0, limit / 1073741824.0,
+                  std::floor(0.9 * static_cast<double>(vertex_count) * limit / need.bytes));
+    throw InvalidInput(text, InvalidInput::Remedy::memory);
   }
   Rng rng(options.seed);
   SurfacePacking packing = sample_mps(surface, sizing, rng);
