@@ -141,10 +141,12 @@ TEST(Relaxation, KeepsASurfacePackingValidItsFeaturesFixedAndItsMeshsTopology) {
   struct Case {
     const char* file;
     const char* spec;
-    double gain;  // at least this much more of the angles in [50, 70]
+    double gain;    // at least this much more of the angles in [50, 70]
+    double obtuse;  // at most this share of the obtuse triangles left
   };
-  const Case cases[] = {{"fandisk.off", "0.04", 0.15}, {"fandisk.off", "auto:0.05", 0.1}, {"elephant.off", "0.012", 0.25}};
-  for (const auto& [file, spec, gain] : cases) {
+  const Case cases[] = {
+      {"fandisk.off", "0.04", 0.15, 0.6}, {"fandisk.off", "auto:0.05", 0.1, 0.75}, {"elephant.off", "0.012", 0.25, 0.3}};
+  for (const auto& [file, spec, gain, obtuse] : cases) {
     SurfaceDomain d = *test::surface_file(file);
     d.set_features(detect_features(d, {60, 60}));
     const auto surface = std::make_shared<const SurfaceDomain>(std::move(d));
@@ -182,7 +184,7 @@ TEST(Relaxation, KeepsASurfacePackingValidItsFeaturesFixedAndItsMeshsTopology) {
                   spec, static_cast<unsigned long long>(seed), n, before.near_60, after.near_60, before.obtuse,
                   after.obtuse);
       EXPECT_GT(after.near_60, before.near_60 + gain) << file << " " << spec << " seed " << seed;
-      EXPECT_LT(after.obtuse, 0.6 * before.obtuse) << file << " " << spec << " seed " << seed;
+      EXPECT_LT(after.obtuse, obtuse * before.obtuse) << file << " " << spec << " seed " << seed;
     }
   }
 }
