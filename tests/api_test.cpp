@@ -195,23 +195,6 @@ TEST(Remesh, RefusesTooFewOrTooManyVerticesAndABadAreaFraction) {
 // oracle) and the mesh keeps the elephant's topology.
 TEST(Remesh, RelaxationMakesTheTrianglesCloserToEquilateral) {
   const auto elephant = test::surface_file("elephant.off");
-  struct Shares {
-    double near_60 = 0, obtuse = 0;
-  };
-  const auto shares = [](const SurfaceMesh& m) {
-    std::size_t near = 0, obtuse = 0;
-    for (const auto& t : m.triangles) {
-      bool wide = false;
-      for (int k = 0; k < 3; ++k) {
-        const Vec3 u = m.vertices[t[(k + 1) % 3]] - m.vertices[t[k]], v = m.vertices[t[(k + 2) % 3]] - m.vertices[t[k]];
-        const double deg = std::acos(dot(u, v) / (norm(u) * norm(v))) * 180 / 3.14159265358979323846;
-        near += deg >= 50 && deg <= 70;
-        wide = wide || deg > 90;
-      }
-      obtuse += wide;
-    }
-    return Shares{near / (3.0 * m.triangles.size()), static_cast<double>(obtuse) / m.triangles.size()};
-  };
   RemeshOptions options;
   const RemeshResult relaxed = remesh(elephant, 8000, options);
   options.relax_sweeps = 0;
@@ -228,7 +211,7 @@ TEST(Remesh, RelaxationMakesTheTrianglesCloserToEquilateral) {
     EXPECT_TRUE(topology.manifold() && topology.genus == 3)
         << (r == &relaxed ? "relaxed: " : "not relaxed: ") << topology.summary();
   }
-  const Shares with = shares(relaxed.mesh), without = shares(tuned.mesh);
+  const test::AngleShares with = test::angle_shares(relaxed.mesh), without = test::angle_shares(tuned.mesh);
   std::printf("[ remesh ] elephant, 8000 vertices: angles in [50,70] %.3f relaxed, %.3f not; obtuse %.4f, %.4f\n",
               with.near_60, without.near_60, with.obtuse, without.obtuse);
   EXPECT_GT(with.near_60, without.near_60 + 0.25);

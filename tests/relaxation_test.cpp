@@ -37,12 +37,8 @@ namespace {
 // The rest length remesh uses: the hexagonal spacing of the packing's own density.
 double hex_spacing(double eta) { return 1 / relative_radius_for(eta); }
 
-// Fraction of the angles within [50, 70] degrees, and of the triangles with one above 90.
-struct AngleShare {
-  double near_60 = 0, obtuse = 0;
-};
-
-AngleShare torus_angles(const Packing& p, double W, double H, double r) {
+// The shares of test::angle_shares, on the brute-force periodic Delaunay triangulation.
+test::AngleShares torus_angles(const Packing& p, double W, double H, double r) {
   std::vector<test::BrutePoint> pts;
   for (const DiskId id : p.ids()) pts.push_back({p.center(id).x, p.center(id).y});
   const auto tris = test::brute_periodic_delaunay(pts, W, H, 2.2 * r);
@@ -59,22 +55,6 @@ AngleShare torus_angles(const Packing& p, double W, double H, double r) {
   return {static_cast<double>(near) / (3.0 * tris.size()), static_cast<double>(obtuse) / tris.size()};
 }
 
-AngleShare surface_angles(const SurfaceMesh& m) {
-  std::size_t near = 0, obtuse = 0;
-  for (const auto& t : m.triangles) {
-    bool wide = false;
-    for (int k = 0; k < 3; ++k) {
-      const Vec3 a = m.vertices[t[k]], b = m.vertices[t[(k + 1) % 3]], c = m.vertices[t[(k + 2) % 3]];
-      const Vec3 u = b - a, v = c - a;
-      const double deg = std::acos(dot(u, v) / std::sqrt(dot(u, u) * dot(v, v))) * 180 / 3.14159265358979323846;
-      near += deg >= 50 && deg <= 70;
-      wide = wide || deg > 90;
-    }
-    obtuse += wide;
-  }
-  return {static_cast<double>(near) / (3.0 * m.triangles.size()), static_cast<double>(obtuse) / m.triangles.size()};
-}
-
 TEST(Relaxation, KeepsATorusPackingValidAndMakesItsAnglesCloserTo60) {
   const double W = 1, H = 1, r = 0.05;
   for (std::uint64_t seed = 1; seed <= 5; ++seed) {
@@ -83,14 +63,14 @@ TEST(Relaxation, KeepsATorusPackingValidAndMakesItsAnglesCloserTo60) {
     Packing p = sample_mps(box, r, rng);
     const std::size_t n = p.size();
     const double spacing = hex_spacing(area_fraction(n, r, W * H));
-    const AngleShare before = torus_angles(p, W, H, r);
+    const test::AngleShares before = torus_angles(p, W, H, r);
     for (int sweep = 1; sweep <= 20; ++sweep) {
       relax(p, spacing, rng);
       ASSERT_EQ(p.size(), n);
       const auto rep = oracle::check_all(test::box_of(box), r, test::centers_of(p), 1e-6, 3000, seed);
       ASSERT_TRUE(rep.conflict_free() && rep.maximal()) << "seed " << seed << " sweep " << sweep << ": " << rep.summary();
     }
-    const AngleShare after = torus_angles(p, W, H, r);
+    const test::AngleShares after = torus_angles(p, W, H, r);
     std::printf("[ relax ] torus r %g seed %llu, %zu disks: angles in [50,70] %.3f -> %.3f, obtuse %.3f -> %.3f\n", r,
                 static_cast<unsigned long long>(seed), n, before.near_60, after.near_60, before.obtuse, after.obtuse);
     EXPECT_GT(after.near_60, before.near_60 + 0.2) << "seed " << seed;
@@ -161,7 +141,7 @@ TEST(Relaxation, KeepsASurfacePackingValidItsFeaturesFixedAndItsMeshsTopology) {
       for (const DiskId id : p.ids())
         if (p.flags(id) & kFixed) fixed[id] = p.center(id);
       ASSERT_FALSE(fixed.empty());
-      const AngleShare before = surface_angles(restricted_delaunay(p));
+      const test::AngleShares before = test::angle_shares(restricted_delaunay(p));
       const double spacing = hex_spacing(static_cast<double>(n) / density_unit(p));
       for (int sweep = 1; sweep <= 12; ++sweep) {
         relax(p, spacing, rng);
@@ -179,7 +159,7 @@ TEST(Relaxation, KeepsASurfacePackingValidItsFeaturesFixedAndItsMeshsTopology) {
       const oracle::TopologyReport got = oracle::check_topology(mesh.vertices.size(), tris);
       EXPECT_TRUE(got.manifold() && got.genus == want.genus && got.boundary_loops == want.boundary_loops)
           << file << " " << spec << " seed " << seed << ": " << got.summary();
-      const AngleShare after = surface_angles(mesh);
+      const test::AngleShares after = test::angle_shares(mesh);
       std::printf("[ relax ] %s %s seed %llu, %zu disks: angles in [50,70] %.3f -> %.3f, obtuse %.3f -> %.3f\n", file,
                   spec, static_cast<unsigned long long>(seed), n, before.near_60, after.near_60, before.obtuse,
                   after.obtuse);

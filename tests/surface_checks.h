@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "disktune/surface_mesh.h"
 #include "disktune/surface_packing.h"
 #include "oracle/surface_oracle.h"
 
@@ -154,6 +155,29 @@ inline oracle::SurfaceReport surface_report(const SurfacePacking& packing, std::
   }
   if (packing.domain().is_closed()) options.boundary_flags.clear();
   return oracle::check_surface(oracle_surface(packing.domain()), centers, radii, options);
+}
+
+/// The share of a mesh's angles within [50, 70] degrees and of its triangles with an
+/// angle above 90, from the vertex coordinates by the law of cosines (the library uses
+/// another formula).
+struct AngleShares {
+  double near_60 = 0, obtuse = 0;
+};
+inline AngleShares angle_shares(const SurfaceMesh& m) {
+  std::size_t near = 0, obtuse = 0;
+  for (const auto& t : m.triangles) {
+    bool wide = false;
+    for (int k = 0; k < 3; ++k) {
+      const Vec3 p = m.vertices[t[k]], q = m.vertices[t[(k + 1) % 3]], s = m.vertices[t[(k + 2) % 3]];
+      const double a2 = squared_norm(q - s), b2 = squared_norm(p - q), c2 = squared_norm(p - s);
+      const double degrees = std::acos((b2 + c2 - a2) / (2 * std::sqrt(b2 * c2))) * 180 / 3.14159265358979323846;
+      near += degrees >= 50 && degrees <= 70;
+      wide = wide || degrees > 90;
+    }
+    obtuse += wide;
+  }
+  const double n = static_cast<double>(m.triangles.size());
+  return {static_cast<double>(near) / (3 * n), static_cast<double>(obtuse) / n};
 }
 
 /// Checks the oracle's verdict, with its summary as the failure message.
