@@ -9,6 +9,7 @@
 #include <functional>
 
 #include "disktune/random.h"
+#include "disktune/surface_mesh.h"
 #include "disktune/surface_packing.h"
 #include "disktune/surface_sampling.h"
 #include "disktune/tuning.h"
@@ -56,6 +57,13 @@ std::size_t attractor_eject(SurfacePacking& packing, DiskId p, Rng& rng, std::si
 std::size_t wide_attractor_eject(SurfacePacking& packing, DiskId p, Rng& rng, std::size_t max_removed);
 /// Relaxation on a surface (tuning.h): each step in the tangent plane at the disk.
 std::size_t relax(SurfacePacking& packing, double spacing, Rng& rng);
+/// For each angle above 90 degrees in `mesh` (the packing's restricted Delaunay mesh,
+/// vertex i its i-th live disk), moves the free disk at it radially away from the
+/// midpoint of the opposite edge, to just outside the circle with that edge as diameter
+/// (or half, or a quarter of the way), where the packing stays conflict-free and
+/// maximal. Mesh the packing again after it. Returns how many disks moved; throws
+/// InvalidInput when the mesh's vertex count is not the packing's.
+std::size_t open_obtuse_angles(SurfacePacking& packing, const SurfaceMesh& mesh);
 
 /// Crystal growth on the surface (one radius only): a crystal of frozen disks at spacing
 /// r (injection) or sqrt(3) r (ejection) grows over the surface, its sites the points at

@@ -5,6 +5,8 @@
 // or a quarter of it) only where the disk meets no other and still covers what only it
 // covers, so the packing stays conflict-free and maximal and its count does not change;
 // what changes is its shape: the triangles of its mesh come closer to equilateral.
+// open_obtuse_angles then moves the vertex of each obtuse angle of the mesh just out of
+// the circle whose diameter is the opposite edge, under the same rule.
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -19,6 +21,32 @@ namespace {
 // The bubble-packing force at distance w rest lengths: pushes below 1, pulls between 1
 // and 1.5, nothing beyond.
 double spring(double w) { return w >= 1.5 ? 0.0 : (1.25 * w - 2.375) * w * w + 1.125; }
+
+// Moves disk p to `to` (put on the domain), or half or a quarter of the way, where it
+// meets no other disk and still holds everything only it covers (a void lies in the
+// convex hull of its points in each plane, and a disk is convex); false if none fits.
+template <class P>
+bool move_toward(P& packing, DiskId p, typename detail::Space<P>::Location to) {
+  using S = detail::Space<P>;
+  const auto c = packing.center(p);
+  const double r = packing.radius(p);
+  auto step = to - c;
+  std::vector<typename S::VoidPoint> voids;  // found once, when a first place meets no disk
+  bool found = false;
+  for (int halvings = 0; halvings < 3; ++halvings, step = step * 0.5) {
+    typename S::Point x;
+    if (!S::project(packing, p, c + step, x) || packing.conflicts(S::location(x), p)) continue;
+    if (!found) voids = S::voids_in(packing, c, S::void_reach(r), {p}), found = true;
+    if (!S::covers_all(packing, x, voids)) continue;
+    detail::BasicUndoLog<P> log(packing);
+    log.move(p, x);
+    // With one radius covers_all is exact; with a sizing p's radius changed on the way.
+    if (S::one_radius(packing) || S::void_free_near(packing, c, r)) return true;
+    log.revert();
+    return false;
+  }
+  return false;
+}
 
 template <class P>
 bool relax_disk(P& packing, DiskId p, double spacing) {
@@ -40,24 +68,7 @@ bool relax_disk(P& packing, DiskId p, double spacing) {
   const double length = norm(step);
   if (!(length > 1e-3 * rest)) return false;  // at rest already
   if (length > 0.25 * rest) step = step * (0.25 * rest / length);
-  // What only p covers (found once, when a first step meets no disk): wherever p goes,
-  // its disk must still hold all of it (a void lies in the convex hull of its points in
-  // each plane, and a disk is convex).
-  std::vector<typename S::VoidPoint> voids;
-  bool found = false;
-  for (int halvings = 0; halvings < 3; ++halvings, step = step * 0.5) {
-    typename S::Point x;
-    if (!S::project(packing, p, c + step, x) || packing.conflicts(S::location(x), p)) continue;
-    if (!found) voids = S::voids_in(packing, c, S::void_reach(r), {p}), found = true;
-    if (!S::covers_all(packing, x, voids)) continue;
-    detail::BasicUndoLog<P> log(packing);
-    log.move(p, x);
-    // With one radius covers_all is exact; with a sizing p's radius changed on the way.
-    if (S::one_radius(packing) || S::void_free_near(packing, c, r)) return true;
-    log.revert();
-    return false;
-  }
-  return false;
+  return move_toward(packing, p, c + step);
 }
 
 template <class P>
@@ -77,5 +88,30 @@ std::size_t relax_in(P& packing, double spacing, Rng& rng) {
 std::size_t relax(Packing& packing, double spacing, Rng& rng) { return relax_in(packing, spacing, rng); }
 
 std::size_t relax(SurfacePacking& packing, double spacing, Rng& rng) { return relax_in(packing, spacing, rng); }
+
+std::size_t open_obtuse_angles(SurfacePacking& packing, const SurfaceMesh& mesh) {
+  const std::vector<DiskId> ids = packing.ids();  // vertex i is the i-th live disk
+  if (mesh.vertices.size() != ids.size()) {
+    throw InvalidInput("open_obtuse_angles: the mesh has " + std::to_string(mesh.vertices.size()) +
+                       " vertices, the packing " + std::to_string(ids.size()) +
+                       " disks; give the packing's own mesh (restricted_delaunay)");
+  }
+  // Just outside the circle over ab, so that the angle at the vertex is a little under 90.
+  constexpr double kOutside = 1.02;
+  std::size_t moved = 0;
+  for (const auto& t : mesh.triangles) {
+    for (int k = 0; k < 3; ++k) {
+      const DiskId p = ids[t[k]];
+      if (packing.flags(p) & (kFixed | kFrozen)) continue;
+      const Vec3 a = mesh.vertices[t[(k + 1) % 3]], b = mesh.vertices[t[(k + 2) % 3]], v = packing.center(p);
+      if (dot(a - v, b - v) >= 0) continue;  // not obtuse at v (v may have moved already)
+      const Vec3 mid = (a + b) * 0.5, off = v - mid;
+      const double d = norm(off), half = 0.5 * norm(a - b);
+      if (!(d > 0)) continue;
+      moved += move_toward(packing, p, mid + off * (kOutside * half / d));
+    }
+  }
+  return moved;
+}
 
 }  // namespace disktune

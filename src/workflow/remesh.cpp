@@ -81,6 +81,8 @@ RemeshResult remesh(std::shared_ptr<const SurfaceDomain> surface, std::size_t ve
   }
 
   out.mesh = restricted_delaunay(packing);
+  // Relaxation leaves about one triangle in a hundred obtuse: open those angles, mesh again.
+  if (options.relax_sweeps > 0 && open_obtuse_angles(packing, out.mesh) > 0) out.mesh = restricted_delaunay(packing);
   out.check = check_surface_mesh(out.mesh);
   return out;
 }
