@@ -9,7 +9,6 @@
 // the circle whose diameter is the opposite edge, under the same rule.
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 
 #include "disktune/surface_tuning.h"
 #include "disktune/tuning.h"

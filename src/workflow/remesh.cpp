@@ -70,9 +70,9 @@ RemeshResult remesh(std::shared_ptr<const SurfaceDomain> surface, std::size_t ve
   }
   out.tuning = tune(packing, Target::count(vertex_count), rng, options.tune);
   // The rest length of the springs: the hexagonal spacing of the count reached.
-  const double spacing = 1 / relative_radius_for(static_cast<double>(packing.size()) / density_unit(packing));
-  const Progress progress{packing.size(), static_cast<double>(packing.size()) / density_unit(packing),
-                          Phase::relaxation};
+  const double eta = static_cast<double>(packing.size()) / density_unit(packing);
+  const double spacing = 1 / relative_radius_for(eta);
+  const Progress progress{packing.size(), eta, Phase::relaxation};
   for (int k = 0; k < options.relax_sweeps; ++k) {
     relax(packing, spacing, rng);
     if (options.tune.on_progress && !options.tune.on_progress(progress)) {
