@@ -15,6 +15,7 @@
 #include "disktune/quality_json.h"
 #include "disktune/random.h"
 #include "disktune/restricted_delaunay.h"
+#include "../src/mesh/dual_edge.h"
 #include "test_util.h"
 
 namespace disktune {
@@ -136,6 +137,65 @@ TEST(RestrictedDelaunay, DenseCoplanarSamplesStayManifoldAndDeterministic) {
   EXPECT_EQ(c.genus, 0);
   EXPECT_EQ(mesh.triangles.size(), 2 * samples.size() - 4);
   EXPECT_EQ(restricted_delaunay(samples, sphere).triangles, mesh.triangles);
+}
+
+// The filtered dual-edge test (intervals, then an exact ring, then rational
+// constructions) must keep exactly the triangles the rational test alone keeps, facing
+// the same way: on smooth and CAD surfaces, on the sphere's flat faces (flat slivers,
+// whose circumcenters lie up to 10^16 away) and at several densities.
+TEST(RestrictedDelaunay, FilteredDualEdgesKeepTheRationalTriangles) {
+  detail::DualEdgeCounts total;
+  for (const auto& [name, fraction] : {std::pair{"sphere.off", 0.015}, std::pair{"sphere.off", 0.03},
+                                       std::pair{"eight.off", 0.015}, std::pair{"elephant.off", 0.01},
+                                       std::pair{"fandisk.off", 0.012}, std::pair{"joint.off", 0.02},
+                                       std::pair{"mesh_with_border.off", 0.01}}) {
+    const SurfaceDomain s = surface(name);
+    for (const std::uint64_t seed : {1, 2}) {
+      const std::vector<Vec3> samples = spread_samples(s, fraction * diagonal(s), seed);
+      const std::vector<std::uint32_t> patches(samples.size(), kAnyPatch);
+      detail::DualEdgeCounts filtered, rational;
+      const SurfaceMesh fast =
+          detail::restricted_delaunay(samples, s, patches, {}, detail::DualArithmetic::filtered, &filtered);
+      const SurfaceMesh exact =
+          detail::restricted_delaunay(samples, s, patches, {}, detail::DualArithmetic::rational, &rational);
+      EXPECT_EQ(fast.triangles, exact.triangles) << name << " at " << fraction << ", seed " << seed;
+      EXPECT_EQ(rational.interval + rational.ring, 0u);
+      EXPECT_EQ(filtered.interval + filtered.ring + filtered.rational, rational.rational);
+      total.interval += filtered.interval, total.ring += filtered.ring, total.rational += filtered.rational;
+      std::printf("[ duals    ] %s, %zu samples: facets settled by intervals %zu, exact ring %zu, rational %zu\n",
+                  name, samples.size(), filtered.interval, filtered.ring, filtered.rational);
+    }
+  }
+  // Both fast arithmetics did their share (the ring: the slivers on flat faces).
+  EXPECT_GT(total.interval, 5 * total.ring);
+  EXPECT_GT(total.ring, 1000u);
+}
+
+// Samples on a grid on each face of a cube: four samples on a grid square are
+// cospherical and many circumcenters fall on a face's plane, where intervals and the
+// exact ring meet zeros and the rational constructions decide.
+TEST(RestrictedDelaunay, DegenerateGridSamplesOnACubeKeepTheRationalTriangles) {
+  const std::vector<Vec3> corners = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
+                                     {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
+  const std::vector<SurfaceDomain::Triangle> faces = {{0, 2, 1}, {0, 3, 2}, {4, 5, 6}, {4, 6, 7}, {0, 1, 5}, {0, 5, 4},
+                                                      {1, 2, 6}, {1, 6, 5}, {2, 3, 7}, {2, 7, 6}, {3, 0, 4}, {3, 4, 7}};
+  const SurfaceDomain cube(corners, faces);
+  std::vector<Vec3> samples;
+  const int n = 6;
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= n; ++j)
+      for (int k = 0; k <= n; ++k)
+        if (i == 0 || i == n || j == 0 || j == n || k == 0 || k == n)
+          samples.push_back({double(i) / n, double(j) / n, double(k) / n});
+  const std::vector<std::uint32_t> patches(samples.size(), kAnyPatch);
+  detail::DualEdgeCounts filtered;
+  const SurfaceMesh fast =
+      detail::restricted_delaunay(samples, cube, patches, {}, detail::DualArithmetic::filtered, &filtered);
+  const SurfaceMesh exact =
+      detail::restricted_delaunay(samples, cube, patches, {}, detail::DualArithmetic::rational, nullptr);
+  EXPECT_EQ(fast.triangles, exact.triangles);
+  EXPECT_GT(filtered.rational, 0u);
+  EXPECT_GT(filtered.interval, 0u);
 }
 
 TEST(RestrictedDelaunay, SparseSamplesOnEightAreReportedWithTheFix) {

@@ -22,9 +22,10 @@ namespace disktune {
 /// stays an isolated vertex (check_surface_mesh counts them). The result is a manifold
 /// of the surface's topology only when the samples are dense enough: check it. Throws
 /// InvalidInput for fewer than 4 samples, a non-finite coordinate, or samples that do
-/// not span a plane. Dual edges are built exactly (Epeck): many samples on one flat face
-/// make flat slivers, and those cost time (measured: 0.03 s for 257 samples and about
-/// 4 s for 6500 on the 320-face data/surfaces/sphere.off).
+/// not span a plane. The dual test is exact: many samples on one flat face make flat
+/// slivers whose circumcenters, rounded, land anywhere. Interval arithmetic settles
+/// almost every facet and exact arithmetic the rest; the whole costs 3-5 times CGAL's
+/// Delaunay triangulation of the samples (docs/benchmarks.md).
 SurfaceMesh restricted_delaunay(const std::vector<Vec3>& samples, const SurfaceDomain& surface);
 
 /// A sample on a feature curve or an open boundary: it belongs to every patch there.

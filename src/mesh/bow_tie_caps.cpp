@@ -70,6 +70,26 @@ std::vector<Fan> closed_fans(const SurfaceMesh& mesh, std::uint32_t v, const std
   return fans;
 }
 
+// Whether v's link edges a -> b close into one simple cycle: the common case, settled
+// without the maps closed_fans needs.
+bool one_closed_fan(const SurfaceMesh& mesh, std::uint32_t v, const std::vector<std::size_t>& around) {
+  std::vector<std::array<std::uint32_t, 2>> link;
+  for (const std::size_t t : around) {
+    const Tri& tri = mesh.triangles[t];
+    const int k = static_cast<int>(std::find(tri.begin(), tri.end(), v) - tri.begin());
+    link.push_back({tri[(k + 1) % 3], tri[(k + 2) % 3]});
+  }
+  std::size_t steps = 1;
+  for (std::uint32_t at = link[0][1]; at != link[0][0]; ++steps) {
+    std::size_t next = link.size(), found = 0;
+    for (std::size_t i = 0; i < link.size(); ++i)
+      if (link[i][0] == at) next = i, ++found;
+    if (found != 1 || steps == link.size()) return false;
+    at = link[next][1];
+  }
+  return steps == link.size();
+}
+
 // The rim's plane: its Newell normal (unit; the rim runs counterclockwise about it) and
 // its centroid.
 struct Plane {
@@ -143,21 +163,26 @@ std::size_t cap_bow_ties(SurfaceMesh& mesh) {
   for (bool changed = true; changed;) {
     changed = false;
     std::vector<std::vector<std::size_t>> around(mesh.vertices.size());
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+      for (const std::uint32_t v : mesh.triangles[t]) around[v].push_back(t);
+    // The mesh's edges and triangles (sorted), built when the first bow tie is met.
     std::set<std::pair<std::uint32_t, std::uint32_t>> edges;
     std::set<Tri> sorted_triangles;
-    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-      const Tri& tri = mesh.triangles[t];
-      Tri key = tri;
-      std::sort(key.begin(), key.end());
-      sorted_triangles.insert(key);
-      for (int k = 0; k < 3; ++k) {
-        around[tri[k]].push_back(t);
-        edges.insert(edge(tri[k], tri[(k + 1) % 3]));
+    const auto index_mesh = [&] {
+      if (!sorted_triangles.empty()) return;
+      for (const Tri& tri : mesh.triangles) {
+        Tri key = tri;
+        std::sort(key.begin(), key.end());
+        sorted_triangles.insert(key);
+        for (int k = 0; k < 3; ++k) edges.insert(edge(tri[k], tri[(k + 1) % 3]));
       }
-    }
+    };
     for (std::uint32_t v = 0; v < around.size() && !changed; ++v) {
-      const std::vector<Fan> fans = around[v].size() < 6 ? std::vector<Fan>{} : closed_fans(mesh, v, around[v]);
+      // Two fans need at least three triangles each.
+      if (around[v].size() < 6 || one_closed_fan(mesh, v, around[v])) continue;
+      const std::vector<Fan> fans = closed_fans(mesh, v, around[v]);
       if (fans.size() < 2) continue;
+      index_mesh();
       const Fan& cone = *std::max_element(fans.begin(), fans.end(), [&](const Fan& a, const Fan& b) {
         return height_ratio(mesh.vertices, v, a) < height_ratio(mesh.vertices, v, b);
       });

@@ -4,38 +4,58 @@
 //
 // A Delaunay triangle belongs to the restricted triangulation when its dual Voronoi edge
 // (a segment between two circumcenters, or a ray for a hull facet) meets the surface; an
-// AABB tree over the input triangles answers that, in exact arithmetic (see below). The
-// surface triangle it meets also tells which way the mesh triangle should face.
+// AABB tree over the input triangles answers that, exactly but mostly in interval
+// arithmetic (DualEdges below). The surface triangle it meets also tells which way the
+// mesh triangle should face.
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Interval_nt.h>
+#include <CGAL/Mpzf.h>
+#include <CGAL/Triangulation_cell_base_with_info_3.h>
 #include <CGAL/Triangulation_vertex_base_with_info_3.h>
 
 #include <algorithm>
 #include <cmath>
 #include <iterator>
-#include <map>
+#include <memory>
 #include <numeric>
 #include <set>
+#include <type_traits>
+#include <unordered_map>
 #include <utility>
 
 #include "bow_tie_caps.h"
 #include "disktune/errors.h"
 #include "disktune/random.h"
 #include "disktune/restricted_delaunay.h"
+#include "dual_edge.h"
 #include "feature_chain.h"
 
 namespace disktune {
+namespace detail {
+template <>
+int strict_sign(const CGAL::Interval_nt_advanced& x) {
+  return x.inf() > 0 ? 1 : x.sup() < 0 ? -1 : 0;
+}
+template <>
+int strict_sign(const CGAL::Mpzf& x) {
+  return static_cast<int>(x.sign());
+}
+}  // namespace detail
+
 namespace {
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = Kernel::Point_3;
 using Triangle3 = Kernel::Triangle_3;
 using VertexBase = CGAL::Triangulation_vertex_base_with_info_3<std::uint32_t, Kernel>;
-using Tds = CGAL::Triangulation_data_structure_3<VertexBase>;
+using CellBase =  // info: the cell's index among the finite cells
+    CGAL::Triangulation_cell_base_with_info_3<std::uint32_t, Kernel, CGAL::Delaunay_triangulation_cell_base_3<Kernel>>;
+using Tds = CGAL::Triangulation_data_structure_3<VertexBase, CellBase>;
 using Delaunay = CGAL::Delaunay_triangulation_3<Kernel, Tds>;
 using TriangleList = std::vector<Triangle3>;
 using Primitive = CGAL::AABB_triangle_primitive<Kernel, TriangleList::const_iterator>;
@@ -44,6 +64,8 @@ using Exact = CGAL::Exact_predicates_exact_constructions_kernel;
 using ExactTriangles = std::vector<Exact::Triangle_3>;
 using ExactPrimitive = CGAL::AABB_triangle_primitive<Exact, ExactTriangles::const_iterator>;
 using ExactTree = CGAL::AABB_tree<CGAL::AABB_traits<Exact, ExactPrimitive>>;
+using Interval = CGAL::Interval_nt_advanced;  // only under CGAL::Protect_FPU_rounding
+using Ring = CGAL::Mpzf;                      // exact +, -, * of doubles
 
 Point point(Vec3 p) { return {p.x, p.y, p.z}; }
 Exact::Point_3 exact(Vec3 p) { return {p.x, p.y, p.z}; }
@@ -145,7 +167,9 @@ void drop_crossings(SurfaceMesh& mesh, const std::vector<std::uint32_t>& sample_
     }
     return false;
   };
-  std::map<std::uint64_t, int> uses;
+  if (std::none_of(mesh.triangles.begin(), mesh.triangles.end(), crosses)) return;
+  std::unordered_map<std::uint64_t, int> uses;
+  uses.reserve(2 * mesh.triangles.size());
   for (const auto& t : mesh.triangles)
     for (int k = 0; k < 3; ++k) ++uses[edge_key(t[k], t[(k + 1) % 3])];
   const auto extra = [&](const std::array<std::uint32_t, 3>& t) {
@@ -185,9 +209,10 @@ void cap_fans_across_creases(SurfaceMesh& mesh, const std::vector<std::array<std
     const double len = norm(n);
     return len > 0 ? n * (1 / len) : n;
   };
-  for (bool changed = true; changed;) {
+  for (bool changed = !feature_edges.empty(); changed;) {
     changed = false;
-    std::map<std::uint64_t, std::vector<std::size_t>> with_edge;  // triangles by edge
+    std::unordered_map<std::uint64_t, std::vector<std::size_t>> with_edge;  // triangles by edge
+    with_edge.reserve(2 * mesh.triangles.size());
     for (std::size_t i = 0; i < mesh.triangles.size(); ++i)
       for (int k = 0; k < 3; ++k) with_edge[edge_key(mesh.triangles[i][k], mesh.triangles[i][(k + 1) % 3])].push_back(i);
     const auto on = [&](std::uint32_t p, std::uint32_t q) {
@@ -243,6 +268,366 @@ void cap_fans_across_creases(SurfaceMesh& mesh, const std::vector<std::array<std
   }
 }
 
+/// The rounding mode interval arithmetic needs, set while an object lives; nothing for an
+/// exact type.
+template <class NT>
+struct RoundingFor {};
+template <>
+struct RoundingFor<Interval> : CGAL::Protect_FPU_rounding<true> {};
+
+Interval as_interval(const Interval& x) { return x; }
+Interval as_interval(const Ring& x) { return Interval(x.to_interval()); }
+
+/// An axis-aligned box known to hold a point.
+struct PointBox {
+  std::array<double, 3> lo, hi;
+  bool finite() const {
+    for (int k = 0; k < 3; ++k)
+      if (!std::isfinite(lo[k]) || !std::isfinite(hi[k])) return false;
+    return true;
+  }
+  Point middle() const { return {0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1]), 0.5 * (lo[2] + hi[2])}; }
+  double width() const { return std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]}); }
+};
+
+template <class NT>
+PointBox box_of(const detail::HomogeneousPoint<NT>& p) {
+  [[maybe_unused]] const RoundingFor<Interval> rounding;
+  PointBox b;
+  const Interval d = as_interval(p.d);
+  for (int k = 0; k < 3; ++k) {
+    const Interval x = as_interval(p.n[k]) / d;  // all reals when d may be zero
+    b.lo[k] = x.inf(), b.hi[k] = x.sup();
+  }
+  return b;
+}
+
+/// AABB traversal that lists the triangles whose box, grown by `pad`, meets the segment
+/// from `from` to `from + step` (the middles of two point boxes): every triangle that the
+/// segment between the boxed points can meet. pad also covers the rounding of the slab
+/// test below, in doubles.
+struct NearSegment {
+  std::array<double, 3> from, step;
+  double pad;
+  TriangleList::const_iterator first;
+  std::vector<std::size_t>* out;
+
+  bool go_further() const { return true; }
+  template <class Node>
+  bool do_intersect(const Point&, const Node& node) const {
+    return near(node.bbox());
+  }
+  void intersection(const Point&, const Primitive& primitive) {
+    if (near(primitive.datum().bbox())) out->push_back(static_cast<std::size_t>(primitive.id() - first));
+  }
+  bool near(const CGAL::Bbox_3& b) const {
+    double t0 = 0, t1 = 1;
+    for (int k = 0; k < 3; ++k) {
+      const double lo = b.min(k) - pad, hi = b.max(k) + pad;
+      if (std::abs(step[k]) < 1e-300) {  // (nearly) parallel to this slab
+        if (from[k] < lo || from[k] > hi) return false;
+        continue;
+      }
+      double ta = (lo - from[k]) / step[k], tb = (hi - from[k]) / step[k];
+      if (ta > tb) std::swap(ta, tb);
+      t0 = std::max(t0, ta), t1 = std::min(t1, tb);
+      if (t0 > t1) return false;
+    }
+    return true;
+  }
+};
+
+/// Which surface triangles the dual of a Delaunay facet meets: the segment between the
+/// circumcenters of its two cells, or for a hull facet the ray from the finite cell's
+/// circumcenter away from it. Samples on a flat piece of surface are coplanar up to
+/// rounding, so the triangulation holds flat slivers whose circumcenters, rounded, land
+/// anywhere along the normal. Three tries, each exact where it answers: intervals on the
+/// circumcenters kept homogeneous (dual_edge.h), which settle almost every facet; the
+/// same polynomials in an exact ring where an interval holds zero (the slivers); and
+/// rational constructions where even that meets a zero (a circumcenter on a triangle's
+/// plane or edge, four cospherical samples).
+class DualEdges {
+ public:
+  DualEdges(const Delaunay& dt, const std::vector<Vec3>& samples, const SurfaceDomain& surface,
+            detail::DualArithmetic arithmetic)
+      : dt_(dt), samples_(samples), surface_(surface), arithmetic_(arithmetic) {
+    const std::vector<Vec3>& v = surface.vertices();
+    for (const auto& t : surface.triangles()) triangles_.emplace_back(point(v[t[0]]), point(v[t[1]]), point(v[t[2]]));
+    tree_.insert(triangles_.begin(), triangles_.end());
+    tree_.build();
+    // A ball around the surface: a ray's part beyond it meets nothing.
+    const CGAL::Bbox_3 box = tree_.bbox();
+    ball_center_ = {(box.xmin() + box.xmax()) / 2, (box.ymin() + box.ymax()) / 2, (box.zmin() + box.zmax()) / 2};
+    ball_radius_ = 1.001 * norm(Vec3{box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin()}) / 2;
+    scale_ = 1 + std::hypot(ball_center_[0], ball_center_[1], ball_center_[2]) + ball_radius_;
+    std::uint32_t index = 0;
+    for (auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c) c->info() = index++;
+    if (arithmetic == detail::DualArithmetic::filtered) {
+      [[maybe_unused]] const RoundingFor<Interval> rounding;
+      interval_centers_.reserve(index);
+      interval_boxes_.reserve(index);
+      for (auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c) {
+        interval_centers_.push_back(detail::circumcenter<Interval>(at(c, 0), at(c, 1), at(c, 2), at(c, 3)));
+        interval_boxes_.push_back(box_of(interval_centers_.back()));
+      }
+    }
+  }
+
+  /// The indices of the surface triangles that the dual of f meets.
+  void hits(const Delaunay::Facet& f, std::vector<std::size_t>& out) {
+    if (arithmetic_ == detail::DualArithmetic::filtered) {
+      if (try_in<Interval>(f, out) != detail::Crossing::unsure) return void(++counts.interval);
+      if (try_in<Ring>(f, out) != detail::Crossing::unsure) return void(++counts.ring);
+    }
+    rational(f, out);
+    ++counts.rational;
+  }
+
+  /// The surface triangle nearest to f's centroid among `hits` (ties: the lower index).
+  std::size_t nearest(const std::array<std::uint32_t, 3>& f, const std::vector<std::size_t>& hits) const {
+    const Point centroid = point((samples_[f[0]] + samples_[f[1]] + samples_[f[2]]) * (1.0 / 3));
+    std::size_t best = hits[0];
+    double best_d2 = CGAL::squared_distance(centroid, triangles_[best]);
+    for (const std::size_t h : hits) {
+      const double d2 = CGAL::squared_distance(centroid, triangles_[h]);
+      if (d2 < best_d2 || (d2 == best_d2 && h < best)) best = h, best_d2 = d2;
+    }
+    return best;
+  }
+
+  detail::DualEdgeCounts counts;
+
+ private:
+  Vec3 at(Delaunay::Cell_handle c, int k) const { return samples_[c->vertex(k)->info()]; }
+
+  /// f as its finite cell, the facet's index in it and the other cell (infinite for a
+  /// hull facet).
+  struct Ends {
+    Delaunay::Cell_handle cell, other;
+    int facet;
+  };
+  Ends ends(const Delaunay::Facet& f) const {
+    Ends e{f.first, f.first->neighbor(f.second), f.second};
+    if (dt_.is_infinite(e.cell)) e.facet = e.other->index(e.cell), std::swap(e.cell, e.other);
+    return e;
+  }
+
+  /// A box around a cell's circumcenter in NT.
+  template <class NT>
+  PointBox box(Delaunay::Cell_handle c) {
+    if constexpr (std::is_same_v<NT, Interval>) {
+      return interval_boxes_[c->info()];
+    } else {
+      return box_of(center<NT>(c));
+    }
+  }
+
+  template <class NT>
+  const detail::HomogeneousPoint<NT>& center(Delaunay::Cell_handle c) {
+    if constexpr (std::is_same_v<NT, Interval>) {
+      return interval_centers_[c->info()];
+    } else {
+      auto it = ring_centers_.find(c->info());
+      if (it == ring_centers_.end())
+        it = ring_centers_.emplace(c->info(), detail::circumcenter<Ring>(at(c, 0), at(c, 1), at(c, 2), at(c, 3))).first;
+      return it->second;
+    }
+  }
+
+  /// The dual of f tested in NT; `out` holds the hit triangles unless the answer is unsure.
+  template <class NT>
+  detail::Crossing try_in(const Delaunay::Facet& f, std::vector<std::size_t>& out) {
+    const Ends e = ends(f);
+    const detail::HomogeneousPoint<NT>& p = center<NT>(e.cell);
+    if (!dt_.is_infinite(e.other)) {
+      const detail::HomogeneousPoint<NT>& q = center<NT>(e.other);
+      if constexpr (std::is_same_v<NT, Ring>) {
+        // Four cospherical samples: the dual edge is a point, which meets the surface
+        // with probability zero (the rational path skips it too).
+        if (p.n[0] * q.d == q.n[0] * p.d && p.n[1] * q.d == q.n[1] * p.d && p.n[2] * q.d == q.n[2] * p.d) {
+          out.clear();
+          return detail::Crossing::miss;
+        }
+      }
+      return along<NT>(p, box<NT>(e.cell), q, box<NT>(e.other), out);
+    }
+    // The ray, cut where it leaves the ball around the surface.
+    const Vec3 a = at(e.cell, (e.facet + 1) & 3), b = at(e.cell, (e.facet + 2) & 3), c = at(e.cell, (e.facet + 3) & 3);
+    const bool flip = CGAL::orientation(point(a), point(b), point(c), point(at(e.cell, e.facet))) == CGAL::POSITIVE;
+    detail::Vector3<NT> out_dir;
+    {
+      [[maybe_unused]] const RoundingFor<NT> rounding;
+      const detail::Vector3<NT> va = detail::vector_of<NT>(a);
+      out_dir = detail::cross(detail::minus(detail::vector_of<NT>(b), va), detail::minus(detail::vector_of<NT>(c), va));
+      if (flip) out_dir = detail::scaled(out_dir, NT(-1));
+    }
+    const PointBox from = box<NT>(e.cell);
+    double shortest = 0;  // a lower bound on |out_dir|
+    {
+      [[maybe_unused]] const RoundingFor<Interval> rounding;
+      Interval length2(0);
+      for (int k = 0; k < 3; ++k) length2 += CGAL::square(as_interval(out_dir[k]));
+      shortest = std::sqrt(length2.inf()) * (1 - 1e-9);
+    }
+    if (!from.finite() || !(shortest > 0)) return detail::Crossing::unsure;
+    const Point m = from.middle();
+    const double farthest =
+        std::hypot(m.x() - ball_center_[0], m.y() - ball_center_[1], m.z() - ball_center_[2]) + 2 * from.width();
+    const double t = 2 * (farthest + ball_radius_) / shortest;
+    if (!std::isfinite(t)) return detail::Crossing::unsure;
+    detail::HomogeneousPoint<NT> q;
+    {
+      [[maybe_unused]] const RoundingFor<NT> rounding;
+      q = detail::moved(p, out_dir, t);
+    }
+    return along<NT>(p, from, q, box_of(q), out);
+  }
+
+  /// The triangles the segment pq meets, or unsure; bp and bq hold p and q.
+  template <class NT>
+  detail::Crossing along(const detail::HomogeneousPoint<NT>& p, const PointBox& bp,
+                         const detail::HomogeneousPoint<NT>& q, const PointBox& bq, std::vector<std::size_t>& out) {
+    out.clear();
+    if (!bp.finite() || !bq.finite()) return detail::Crossing::unsure;
+    if (!in_ball(bp) || !in_ball(bq)) {
+      // A flat sliver's circumcenter can lie 10^16 away, where doubles say nothing about
+      // the surface: the segment is cut, exactly, to the part that can meet the ball.
+      const auto [u0, u1] = chord(bp, bq);
+      if (u0 > u1) return detail::Crossing::miss;
+      if (u0 > 0 || u1 < 1) {
+        detail::HomogeneousPoint<NT> from, to;
+        {
+          [[maybe_unused]] const RoundingFor<NT> rounding;
+          from = detail::between(p, q, u0), to = detail::between(p, q, u1);
+        }
+        return along_inside(from, box_of(from), to, box_of(to), out);
+      }
+    }
+    return along_inside(p, bp, q, bq, out);
+  }
+
+  bool in_ball(const PointBox& b) const {
+    double d2 = 0;
+    for (int k = 0; k < 3; ++k) {
+      const double far = std::max(std::abs(b.lo[k] - ball_center_[k]), std::abs(b.hi[k] - ball_center_[k]));
+      d2 += far * far;
+    }
+    return d2 < ball_radius_ * ball_radius_;
+  }
+
+  /// Parameters u0, u1 such that the points p + u (q - p) in the ball have u in [u0, u1]
+  /// (u0 > u1 if none): the ball's chord lies within R / |q - p| of the parameter of the
+  /// point nearest to its center. Bounds rounded outward by interval arithmetic.
+  std::pair<double, double> chord(const PointBox& bp, const PointBox& bq) const {
+    [[maybe_unused]] const RoundingFor<Interval> rounding;
+    Interval length2(0), toward(0);
+    for (int k = 0; k < 3; ++k) {
+      const Interval from(bp.lo[k], bp.hi[k]), step = Interval(bq.lo[k], bq.hi[k]) - from;
+      length2 += CGAL::square(step);
+      toward += (Interval(ball_center_[k]) - from) * step;
+    }
+    if (!(length2.inf() > 0)) return {0, 1};
+    const Interval nearest = toward / length2;
+    const Interval reach = Interval(1.01 * ball_radius_) / CGAL::sqrt(Interval(length2.inf()));
+    return {std::max(0.0, (nearest - reach).inf()), std::min(1.0, (nearest + reach).sup())};
+  }
+
+  /// along() for a segment that the caller has cut to the ball where needed.
+  template <class NT>
+  detail::Crossing along_inside(const detail::HomogeneousPoint<NT>& p, const PointBox& bp,
+                                const detail::HomogeneousPoint<NT>& q, const PointBox& bq,
+                                std::vector<std::size_t>& out) {
+    if (!bp.finite() || !bq.finite()) return detail::Crossing::unsure;
+    const Point a = bp.middle(), b = bq.middle();
+    NearSegment near{{a.x(), a.y(), a.z()}, {b.x() - a.x(), b.y() - a.y(), b.z() - a.z()}, 0, triangles_.begin(),
+                     &candidates_};
+    double extent = scale_;
+    for (int k = 0; k < 3; ++k) extent = std::max({extent, std::abs(a[k]), std::abs(b[k])});
+    near.pad = 2 * std::max(bp.width(), bq.width()) + 1e-14 * extent;
+    // Too vague to be worth a search: the next arithmetic will be sharper.
+    if (std::is_same_v<NT, Interval> && near.pad > 1e-3 * ball_radius_) return detail::Crossing::unsure;
+    candidates_.clear();
+    tree_.traversal(a, near);
+    // Exact centers are tested in intervals first (their rounding is tight), exactly
+    // only where that is unsure.
+    [[maybe_unused]] const RoundingFor<Interval> rounding;
+    detail::HomogeneousPoint<Interval> p_near, q_near;
+    if constexpr (std::is_same_v<NT, Ring>) p_near = rounded(p), q_near = rounded(q);
+    const std::vector<Vec3>& v = surface_.vertices();
+    for (const std::size_t k : candidates_) {
+      const auto& t = surface_.triangles()[k];
+      detail::Crossing c;
+      if constexpr (std::is_same_v<NT, Ring>) {
+        c = detail::segment_meets_triangle(p_near, q_near, v[t[0]], v[t[1]], v[t[2]]);
+        if (c == detail::Crossing::unsure) {
+          const CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
+          c = detail::segment_meets_triangle(p, q, v[t[0]], v[t[1]], v[t[2]]);
+        }
+      } else {
+        c = detail::segment_meets_triangle(p, q, v[t[0]], v[t[1]], v[t[2]]);
+      }
+      if (c == detail::Crossing::unsure) return c;
+      if (c == detail::Crossing::hit) out.push_back(k);
+    }
+    return out.empty() ? detail::Crossing::miss : detail::Crossing::hit;
+  }
+
+  static detail::HomogeneousPoint<Interval> rounded(const detail::HomogeneousPoint<Ring>& p) {
+    return {{as_interval(p.n[0]), as_interval(p.n[1]), as_interval(p.n[2])}, as_interval(p.d)};
+  }
+
+  /// The dual built and tested in rational arithmetic (Epeck), the tree built on first use.
+  void rational(const Delaunay::Facet& f, std::vector<std::size_t>& out) {
+    if (!exact_tree_) {
+      const std::vector<Vec3>& v = surface_.vertices();
+      for (const auto& t : surface_.triangles()) exact_input_.emplace_back(exact(v[t[0]]), exact(v[t[1]]), exact(v[t[2]]));
+      exact_tree_ = std::make_unique<ExactTree>(exact_input_.begin(), exact_input_.end());
+    }
+    const Ends e = ends(f);
+    exact_hits_.clear();
+    if (!dt_.is_infinite(e.other)) {
+      const Exact::Segment_3 dual(exact_center(e.cell), exact_center(e.other));
+      // AABB segment queries need a proper segment (and a point is missed anyway).
+      if (!dual.is_degenerate()) exact_tree_->all_intersected_primitives(dual, std::back_inserter(exact_hits_));
+    } else {
+      const Exact::Point_3 p = exact(at(e.cell, (e.facet + 1) & 3)), q = exact(at(e.cell, (e.facet + 2) & 3)),
+                           r = exact(at(e.cell, (e.facet + 3) & 3)), inside = exact(at(e.cell, e.facet));
+      Exact::Vector_3 dir = CGAL::cross_product(q - p, r - p);
+      if (CGAL::orientation(p, q, r, inside) == CGAL::POSITIVE) dir = -dir;
+      exact_tree_->all_intersected_primitives(Exact::Ray_3(exact_center(e.cell), dir), std::back_inserter(exact_hits_));
+    }
+    out.clear();
+    for (const auto h : exact_hits_) out.push_back(static_cast<std::size_t>(h - exact_input_.begin()));
+  }
+
+  const Exact::Point_3& exact_center(Delaunay::Cell_handle c) {
+    auto it = exact_centers_.find(c->info());
+    if (it == exact_centers_.end()) {
+      it = exact_centers_
+               .emplace(c->info(), CGAL::circumcenter(exact(at(c, 0)), exact(at(c, 1)), exact(at(c, 2)), exact(at(c, 3))))
+               .first;
+    }
+    return it->second;
+  }
+
+  const Delaunay& dt_;
+  const std::vector<Vec3>& samples_;
+  const SurfaceDomain& surface_;
+  detail::DualArithmetic arithmetic_;
+  TriangleList triangles_;  // every surface triangle, in order (zero-area ones too)
+  Tree tree_;
+  std::array<double, 3> ball_center_{};
+  double ball_radius_ = 0, scale_ = 1;
+  std::vector<detail::HomogeneousPoint<Interval>> interval_centers_;
+  std::vector<PointBox> interval_boxes_;
+  std::unordered_map<std::uint32_t, detail::HomogeneousPoint<Ring>> ring_centers_;
+  std::unordered_map<std::uint32_t, Exact::Point_3> exact_centers_;
+  ExactTriangles exact_input_;
+  std::unique_ptr<ExactTree> exact_tree_;
+  std::vector<std::size_t> candidates_;
+  std::vector<ExactTriangles::const_iterator> exact_hits_;
+};
+
 }  // namespace
 
 SurfaceMesh restricted_delaunay(const std::vector<Vec3>& samples, const SurfaceDomain& surface) {
@@ -271,6 +656,14 @@ SurfaceMesh restricted_delaunay(const SurfacePacking& packing) {
 SurfaceMesh restricted_delaunay(const std::vector<Vec3>& samples, const SurfaceDomain& surface,
                                 const std::vector<std::uint32_t>& sample_patch,
                                 const std::vector<std::array<std::uint32_t, 2>>& feature_edges) {
+  return detail::restricted_delaunay(samples, surface, sample_patch, feature_edges, detail::DualArithmetic::filtered,
+                                     nullptr);
+}
+
+SurfaceMesh detail::restricted_delaunay(const std::vector<Vec3>& samples, const SurfaceDomain& surface,
+                                        const std::vector<std::uint32_t>& sample_patch,
+                                        const std::vector<std::array<std::uint32_t, 2>>& feature_edges,
+                                        DualArithmetic arithmetic, DualEdgeCounts* counts) {
   check_samples(samples);
   if (sample_patch.size() != samples.size()) {
     throw InvalidInput("restricted_delaunay: " + std::to_string(sample_patch.size()) + " patches for " +
@@ -294,77 +687,50 @@ SurfaceMesh restricted_delaunay(const std::vector<Vec3>& samples, const SurfaceD
     throw InvalidInput("restricted_delaunay: the " + std::to_string(samples.size()) +
                        " samples lie on one line; sample the whole surface");
   }
-  // Samples on a flat piece of the surface are coplanar up to rounding, so the
-  // triangulation holds flat slivers whose circumcenters, rounded, land anywhere: dual
-  // edges are built and tested exactly (one kept facet per pair of sliver facets).
+  DualEdges duals(dt, samples, surface, arithmetic);
   const std::vector<Vec3>& sv = surface.vertices();
-  ExactTriangles input;
-  for (const auto& t : surface.triangles()) input.emplace_back(exact(sv[t[0]]), exact(sv[t[1]]), exact(sv[t[2]]));
-  const ExactTree tree(input.begin(), input.end());
-
   SurfaceMesh mesh;
   mesh.vertices = samples;
-  std::vector<ExactTriangles::const_iterator> hits;
-  // Keeps the facet if `dual` meets the surface, facing the way of the hit surface
+  std::vector<std::size_t> hits;
+  // Keeps facet f if its dual meets the surface, facing the way of the hit surface
   // triangle nearest to it (a long dual edge may cross the surface more than once).
-  const auto keep_if_hit = [&](const Delaunay::Facet& f, const auto& dual) {
+  const auto keep = [&](const Delaunay::Facet& f) {
+    if (hits.empty()) return;
     std::array<std::uint32_t, 3> t;
     for (int k = 0; k < 3; ++k) t[k] = f.first->vertex((f.second + 1 + k) & 3)->info();
-    hits.clear();
-    tree.all_intersected_primitives(dual, std::back_inserter(hits));
-    if (hits.empty()) return;
-    const Point centroid = point((samples[t[0]] + samples[t[1]] + samples[t[2]]) * (1.0 / 3));
-    const auto distance2 = [&](ExactTriangles::const_iterator h) {
-      const auto& tri = surface.triangles()[static_cast<std::size_t>(h - input.begin())];
-      return CGAL::squared_distance(centroid, Triangle3(point(sv[tri[0]]), point(sv[tri[1]]), point(sv[tri[2]])));
-    };
-    std::size_t best = 0;
-    for (std::size_t k = 1; k < hits.size(); ++k) {
-      if (distance2(hits[k]) < distance2(hits[best])) best = k;
-    }
-    const auto& hit = surface.triangles()[static_cast<std::size_t>(hits[best] - input.begin())];
+    const auto& hit = surface.triangles()[duals.nearest(t, hits)];
     if (dot(normal(samples, t), normal(sv, hit)) < 0) std::swap(t[1], t[2]);
     // The smallest index first (orientation kept), so the output does not depend on
     // how the triangulation happens to store its cells.
     std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
     mesh.triangles.push_back(t);
   };
-  const auto exact_point = [&](Delaunay::Vertex_handle v) { return exact(samples[v->info()]); };
 
   if (dt.dimension() == 2) {
-    // Coplanar samples: each triangle's dual is the line through its circumcenter along
-    // the plane's normal.
+    // Coplanar samples (rare: a flat surface): each triangle's dual is the line through
+    // its circumcenter along the plane's normal, built and tested exactly.
+    std::vector<Exact::Triangle_3> input;
+    for (const auto& t : surface.triangles()) input.emplace_back(exact(sv[t[0]]), exact(sv[t[1]]), exact(sv[t[2]]));
+    const ExactTree tree(input.begin(), input.end());
+    std::vector<std::vector<Exact::Triangle_3>::const_iterator> found;
+    const auto exact_point = [&](Delaunay::Vertex_handle v) { return exact(samples[v->info()]); };
     for (auto f = dt.finite_facets_begin(); f != dt.finite_facets_end(); ++f) {
       const Exact::Point_3 a = exact_point(f->first->vertex(0)), b = exact_point(f->first->vertex(1)),
                            c = exact_point(f->first->vertex(2));
-      keep_if_hit(*f, Exact::Line_3(CGAL::circumcenter(a, b, c), CGAL::normal(a, b, c)));
+      found.clear();
+      tree.all_intersected_primitives(Exact::Line_3(CGAL::circumcenter(a, b, c), CGAL::normal(a, b, c)),
+                                      std::back_inserter(found));
+      hits.clear();
+      for (const auto h : found) hits.push_back(static_cast<std::size_t>(h - input.cbegin()));
+      keep(*f);
     }
   } else {
-    // Each finite cell's circumcenter, once.
-    std::map<Delaunay::Cell_handle, Exact::Point_3> center;
-    for (auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c) {
-      center.emplace(c, CGAL::circumcenter(exact_point(c->vertex(0)), exact_point(c->vertex(1)),
-                                           exact_point(c->vertex(2)), exact_point(c->vertex(3))));
-    }
     for (auto f = dt.finite_facets_begin(); f != dt.finite_facets_end(); ++f) {
-      Delaunay::Cell_handle c = f->first, n = c->neighbor(f->second);
-      if (!dt.is_infinite(c) && !dt.is_infinite(n)) {
-        const Exact::Segment_3 dual(center.at(c), center.at(n));
-        // Four cospherical samples make the segment a point, which meets the surface with
-        // probability zero (and AABB segment queries need a proper segment).
-        if (!dual.is_degenerate()) keep_if_hit(*f, dual);
-        continue;
-      }
-      // A hull facet: its dual is the ray from the finite cell's circumcenter outward.
-      int i = f->second;
-      if (dt.is_infinite(c)) i = n->index(c), std::swap(c, n);
-      const Exact::Point_3 p = exact_point(c->vertex((i + 1) & 3)), q = exact_point(c->vertex((i + 2) & 3)),
-                           r = exact_point(c->vertex((i + 3) & 3)), inside = exact_point(c->vertex(i));
-      Exact::Vector_3 out = CGAL::cross_product(q - p, r - p);
-      if (CGAL::orientation(p, q, r, inside) == CGAL::POSITIVE) out = -out;
-      keep_if_hit(*f, Exact::Ray_3(center.at(c), out));
+      duals.hits(*f, hits);
+      keep(*f);
     }
   }
+  if (counts) *counts = duals.counts;
   cap_fans_across_creases(mesh, feature_edges);
   drop_crossings(mesh, sample_patch);
   detail::cap_bow_ties(mesh);
