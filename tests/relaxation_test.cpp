@@ -211,6 +211,46 @@ TEST(Relaxation, OpeningObtuseAnglesLeavesFewerObtuseTrianglesAndAValidPacking) 
   }
 }
 
+// An obtuse angle at a fixed disk (a feature curve's) cannot be opened by moving that
+// disk: one of the other two moves toward the far side instead.
+TEST(Relaxation, ObtuseAnglesAtFixedDisksAreOpenedByTheirNeighbours) {
+  SurfaceDomain d = *test::surface_file("fandisk.off");
+  d.set_features(detect_features(d, {60, 60}));
+  const auto surface = std::make_shared<const SurfaceDomain>(std::move(d));
+  for (const std::uint64_t seed : {1, 2}) {
+    Rng rng(seed);
+    SurfacePacking p = sample_mps(surface, SurfaceSizing::constant(0.03), rng);
+    const double spacing = hex_spacing(static_cast<double>(p.size()) / density_unit(p));
+    for (int sweep = 0; sweep < 15; ++sweep) relax(p, spacing, rng);
+    std::map<DiskId, Vec3> fixed;
+    for (const DiskId id : p.ids())
+      if (p.flags(id) & kFixed) fixed[id] = p.center(id);
+    // Obtuse angles whose vertex is a fixed disk, by plain geometry on the mesh.
+    const auto obtuse_at_fixed = [&](const SurfaceMesh& m) {
+      const std::vector<DiskId> ids = p.ids();
+      std::size_t n = 0;
+      for (const auto& t : m.triangles)
+        for (int k = 0; k < 3; ++k) {
+          const Vec3 v = m.vertices[t[k]], a = m.vertices[t[(k + 1) % 3]], b = m.vertices[t[(k + 2) % 3]];
+          n += fixed.count(ids[t[k]]) && dot(a - v, b - v) < 0;
+        }
+      return n;
+    };
+    const SurfaceMesh mesh = restricted_delaunay(p);
+    const std::size_t before = obtuse_at_fixed(mesh);
+    open_obtuse_angles(p, mesh);
+    const auto rep = test::surface_report(p);
+    ASSERT_TRUE(rep.ok()) << "seed " << seed << ": " << rep.summary();
+    for (const auto& [id, at] : fixed) EXPECT_EQ(squared_norm(p.center(id) - at), 0.0);
+    const std::size_t after = obtuse_at_fixed(restricted_delaunay(p));
+    std::printf("[ relax ] fandisk r 0.03 seed %llu: obtuse angles at fixed disks %zu -> %zu\n",
+                static_cast<unsigned long long>(seed), before, after);
+    // Measured: 96 -> 82 and 91 -> 77; moving only the vertex, 96 -> 95 and 91 -> 91.
+    EXPECT_GT(before, 10u);
+    EXPECT_LT(after, 0.9 * static_cast<double>(before));
+  }
+}
+
 TEST(Relaxation, RefusesASpacingThatIsNotPositive) {
   const PeriodicBox box(1, 1);
   Rng rng(1);

@@ -27,7 +27,8 @@ struct RemeshOptions {
   /// Relaxation sweeps after the count is reached (relax, surface_tuning.h): the disks
   /// move toward a hexagonal spacing while the packing stays conflict-free and maximal,
   /// which makes the triangles closer to equilateral; then the obtuse angles of the mesh
-  /// are opened (open_obtuse_angles) and the surface meshed again. 0: neither.
+  /// are opened (open_obtuse_angles) and the surface meshed again, up to three times.
+  /// 0: neither.
   int relax_sweeps = 30;
   std::uint64_t seed = 1;
   /// Sharp edges to keep: where the surface has no features set (SurfaceDomain::

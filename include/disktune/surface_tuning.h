@@ -61,7 +61,9 @@ std::size_t relax(SurfacePacking& packing, double spacing, Rng& rng);
 /// vertex i its i-th live disk), moves the free disk at it radially away from the
 /// midpoint of the opposite edge, to just outside the circle with that edge as diameter
 /// (or half, or a quarter of the way), where the packing stays conflict-free and
-/// maximal. Mesh the packing again after it. Returns how many disks moved; throws
+/// maximal; where that disk is fixed or has no room, moves one of the other two toward
+/// the far side instead, until the angle is just under 90 degrees. Mesh the packing
+/// again after it. Returns how many disks moved; throws
 /// InvalidInput when the mesh's vertex count is not the packing's.
 std::size_t open_obtuse_angles(SurfacePacking& packing, const SurfaceMesh& mesh);
 

@@ -6,7 +6,8 @@
 // covers, so the packing stays conflict-free and maximal and its count does not change;
 // what changes is its shape: the triangles of its mesh come closer to equilateral.
 // open_obtuse_angles then moves the vertex of each obtuse angle of the mesh just out of
-// the circle whose diameter is the opposite edge, under the same rule.
+// the circle whose diameter is the opposite edge, under the same rule, or where that
+// vertex cannot move, one of its two neighbours until the angle closes.
 #include <algorithm>
 #include <cmath>
 
@@ -97,17 +98,35 @@ std::size_t open_obtuse_angles(SurfacePacking& packing, const SurfaceMesh& mesh)
   }
   // Just outside the circle over ab, so that the angle at the vertex is a little under 90.
   constexpr double kOutside = 1.02;
+  // The cosine a neighbour's move aims at when the vertex itself cannot move (88 degrees).
+  constexpr double kAcute = 0.035;
+  const auto center = [&](std::uint32_t vertex) { return packing.center(ids[vertex]); };
+  const auto movable = [&](DiskId p) { return !(packing.flags(p) & (kFixed | kFrozen)); };
   std::size_t moved = 0;
   for (const auto& t : mesh.triangles) {
     for (int k = 0; k < 3; ++k) {
       const DiskId p = ids[t[k]];
-      if (packing.flags(p) & (kFixed | kFrozen)) continue;
-      const Vec3 a = mesh.vertices[t[(k + 1) % 3]], b = mesh.vertices[t[(k + 2) % 3]], v = packing.center(p);
-      if (dot(a - v, b - v) >= 0) continue;  // not obtuse at v (v may have moved already)
+      const Vec3 a = center(t[(k + 1) % 3]), b = center(t[(k + 2) % 3]), v = center(t[k]);
+      if (dot(a - v, b - v) >= 0) continue;  // not obtuse at v (or no longer)
       const Vec3 mid = (a + b) * 0.5, off = v - mid;
       const double d = norm(off), half = 0.5 * norm(a - b);
-      if (!(d > 0)) continue;
-      moved += move_toward(packing, p, mid + off * (kOutside * half / d));
+      if (movable(p) && d > 0 && move_toward(packing, p, mid + off * (kOutside * half / d))) {
+        ++moved;
+        continue;
+      }
+      // v holds (a feature or boundary disk, or no room): turn a neighbour toward the
+      // other one's side, along the direction that closes the angle at v fastest.
+      for (const int side : {1, 2}) {
+        const DiskId q = ids[t[(k + side) % 3]];
+        const Vec3 x = center(t[(k + side) % 3]), far = center(t[(k + 3 - side) % 3]) - v;
+        const double reach = norm(far);
+        if (!movable(q) || !(reach > 0)) continue;
+        const double shift = (kAcute * norm(x - v) * reach - dot(x - v, far)) / reach;
+        if (move_toward(packing, q, x + far * (shift / reach))) {
+          ++moved;
+          break;
+        }
+      }
     }
   }
   return moved;
