@@ -94,6 +94,12 @@ expect tune-input 0 "-> [0-9]+ disks .*reached.*eta = 0\.6[0-9]+" -- "$bin" tune
 expect tune-crystal 0 "eta = 0\.85[0-9]*, " -- "$bin" tune --radius 0.03 --target-fraction 0.85 --method crystal
 expect tune-not-reached 4 "NOT reached" -- "$bin" tune --radius 0.03 --target-fraction 0.9 --method void --output nr.csv
 [ -s nr.csv ] && pass=$((pass + 1)) || { echo "FAIL not-reached writes the closest packing"; fails=$((fails + 1)); }
+# --relax: the count kept, the packing still conflict-free and maximal (report's own check).
+expect tune-relax 0 "^tune: [0-9]+ -> 900 disks \(target 900, reached\).*, relaxed 5 sweeps" -- "$bin" tune --radius 0.03 --target-count 900 --seed 2 --relax 5 --output tr.csv
+expect tune-relax-report 0 "^report: 900 disks, .*maximal, conflict-free" -- "$bin" report tr.csv --radius 0.03
+expect tune-relax-domain 0 "reached.*, relaxed 3 sweeps" -- "$bin" tune --domain "$data/domains/notch_and_holes.poly" --radius 0.03 --target-fraction 0.6 --relax 3 --output trd.csv
+expect tune-relax-domain-report 0 "maximal, conflict-free" -- "$bin" report trd.csv --domain "$data/domains/notch_and_holes.poly" --radius 0.03
+expect tune-relax-negative 2 "--relax" -- "$bin" tune --radius 0.03 --target-count 900 --relax -1
 expect tune-two-targets 2 "excludes" -- "$bin" tune --radius 0.03 --target-count 900 --target-rho 0.9
 expect tune-no-target 2 "give one target" -- "$bin" tune --radius 0.03
 expect tune-too-dense 2 "densest packing" -- "$bin" tune --radius 0.03 --target-count 5000
@@ -269,6 +275,8 @@ expect surface-sample 0 "^sample: [0-9]+ disks, eta = 0\.[0-9]+.*surface .*eight
 head -n 1 e.csv | grep -qx "x,y,z,r" && pass=$((pass + 1)) || { echo "FAIL surface header"; fails=$((fails + 1)); }
 expect surface-tune 0 "^tune: [0-9]+ -> 420 disks \(target 420, reached\)" -- "$bin" tune --domain "$eight" --radius 0.045 --input e.csv --target-count 420 --output e4.csv
 [ "$(($(wc -l <e4.csv) - 1))" -eq 420 ] && pass=$((pass + 1)) || { echo "FAIL surface tune row count"; fails=$((fails + 1)); }
+expect surface-tune-relax 0 "^tune: [0-9]+ -> 420 disks \(target 420, reached\), .*, relaxed 3 sweeps \(" -- "$bin" tune --domain "$eight" --radius 0.045 --input e.csv --target-count 420 --relax 3 --output e4r.csv
+expect surface-tune-relax-report 0 "^report: 420 disks, .*maximal, conflict-free; mesh: .*manifold yes, genus 2" -- "$bin" report e4r.csv --domain "$eight" --radius 0.045
 expect surface-mesh 0 "^mesh: 420 disks, 420 vertices, [0-9]+ triangles \(restricted Delaunay\), manifold yes, genus 2 \(input genus 2\)" -- "$bin" mesh e4.csv --domain "$eight" --radius 0.045 --output e4.off
 sed -n 2p e4.off | grep -qE "^420 [0-9]+ 0$" && pass=$((pass + 1)) || { echo "FAIL surface mesh OFF header"; fails=$((fails + 1)); }
 expect surface-report 0 "^report: 420 disks, eta = 0\.6[0-9]+, rho = [0-9.]+, maximal, conflict-free; mesh: .*manifold yes, genus 2" -- "$bin" report e4.csv --domain "$eight" --radius 0.045 --json e4.json

@@ -77,8 +77,15 @@ struct TuneJob {
   Method method = Method::automatic;
   std::string input, output, svg;
   std::uint64_t seed = 1;
+  int relax_sweeps = 0;  // after tuning (--relax)
 };
 int run_tune(const TuneJob& job);
+
+/// --relax: the rest length of relaxation's springs for `count` disks, `unit` of which
+/// make area fraction 1 (the hexagonal spacing of that density, in radii), and the
+/// summary's words for `sweeps` sweeps ("" for none).
+double relax_spacing(std::size_t count, double unit);
+std::string relaxed_text(int sweeps);
 
 /// What `tune` does alike on the plane and on a surface (tune_command.cpp). Runs
 /// `run(options)` with `method` and a progress bar from `start` disks towards `target`.

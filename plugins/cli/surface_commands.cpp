@@ -176,12 +176,15 @@ int run_surface_tune(const TuneJob& job) {
   const TuneResult res = tune_with_progress(
       start, target, job.method, [&](const TuneOptions& options) { return tune(packing, job.target, rng, options); },
       job.output, write_output);
+  const double spacing = relax_spacing(packing.size(), domain.unit);
+  for (int k = 0; k < job.relax_sweeps; ++k) relax(packing, spacing, rng);
   const double seconds = seconds_since(t0);
 
   if (!job.output.empty()) write_output();
   warn_too_few_to_mesh(res.count);
   return report_tune(start, res, domain.density_text(res.count), seconds,
-                     " (" + domain.radius_text() + ", " + domain.describe() + ")", job.output);
+                     relaxed_text(job.relax_sweeps) + " (" + domain.radius_text() + ", " + domain.describe() + ")",
+                     job.output);
 }
 
 int run_surface_mesh(const std::string& input, const DomainArgs& domain_args,
