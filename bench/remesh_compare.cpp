@@ -263,7 +263,7 @@ int compare_planar(const Args& args) {
   const std::size_t sampled = packing.size();
   const disktune::TuneResult tuned = disktune::tune(packing, *shared, disktune::Target::count(args.vertices), rng);
   const double spacing = 1 / disktune::relative_radius_for(n / disktune::density_unit(packing, domain.area()));
-  for (int k = 0; k < defaults.relax_sweeps; ++k) disktune::relax(packing, spacing, rng);
+  disktune::relax(packing, spacing, defaults.relax_sweeps, rng);
   const disktune::PlanarMesh ours =
       disktune::constrained_delaunay(packing, disktune::boundary_loops(packing, *shared));
   const double our_seconds = since(t0);

@@ -55,27 +55,58 @@ test::AngleShares torus_angles(const Packing& p, double W, double H, double r) {
   return {static_cast<double>(near) / (3.0 * tris.size()), static_cast<double>(obtuse) / tris.size()};
 }
 
+// Sweep by sweep, and several sweeps with momentum (the oracle after each through the
+// callback); momentum should leave more angles near 60 degrees.
 TEST(Relaxation, KeepsATorusPackingValidAndMakesItsAnglesCloserTo60) {
   const double W = 1, H = 1, r = 0.05;
+  double plain_total = 0, momentum_total = 0;
   for (std::uint64_t seed = 1; seed <= 5; ++seed) {
-    const PeriodicBox box(W, H);
-    Rng rng(seed);
-    Packing p = sample_mps(box, r, rng);
-    const std::size_t n = p.size();
-    const double spacing = hex_spacing(area_fraction(n, r, W * H));
-    const test::AngleShares before = torus_angles(p, W, H, r);
-    for (int sweep = 1; sweep <= 20; ++sweep) {
-      relax(p, spacing, rng);
-      ASSERT_EQ(p.size(), n);
-      const auto rep = oracle::check_all(test::box_of(box), r, test::centers_of(p), 1e-6, 3000, seed);
-      ASSERT_TRUE(rep.conflict_free() && rep.maximal()) << "seed " << seed << " sweep " << sweep << ": " << rep.summary();
+    for (const bool momentum : {false, true}) {
+      const PeriodicBox box(W, H);
+      Rng rng(seed);
+      Packing p = sample_mps(box, r, rng);
+      const std::size_t n = p.size();
+      const double spacing = hex_spacing(area_fraction(n, r, W * H));
+      const test::AngleShares before = torus_angles(p, W, H, r);
+      const auto judge = [&](int sweep) {
+        EXPECT_EQ(p.size(), n);
+        const auto rep = oracle::check_all(test::box_of(box), r, test::centers_of(p), 1e-6, 3000, seed);
+        EXPECT_TRUE(rep.conflict_free() && rep.maximal()) << "seed " << seed << " sweep " << sweep << ": " << rep.summary();
+        return rep.conflict_free() && rep.maximal();
+      };
+      int sweeps = 0;
+      if (momentum) {
+        relax(p, spacing, 20, rng, [&](int k) { return ++sweeps == k && judge(k); });
+      } else {
+        for (sweeps = 1; sweeps <= 20; ++sweeps) {
+          relax(p, spacing, rng);
+          ASSERT_TRUE(judge(sweeps));
+        }
+        --sweeps;
+      }
+      ASSERT_EQ(sweeps, 20);
+      const test::AngleShares after = torus_angles(p, W, H, r);
+      std::printf("[ relax ] torus r %g seed %llu, %zu disks%s: angles in [50,70] %.3f -> %.3f, obtuse %.3f -> %.3f\n",
+                  r, static_cast<unsigned long long>(seed), n, momentum ? ", momentum" : "", before.near_60,
+                  after.near_60, before.obtuse, after.obtuse);
+      EXPECT_GT(after.near_60, before.near_60 + 0.2) << "seed " << seed;
+      EXPECT_LT(after.obtuse, before.obtuse / 2) << "seed " << seed;
+      (momentum ? momentum_total : plain_total) += after.near_60;
     }
-    const test::AngleShares after = torus_angles(p, W, H, r);
-    std::printf("[ relax ] torus r %g seed %llu, %zu disks: angles in [50,70] %.3f -> %.3f, obtuse %.3f -> %.3f\n", r,
-                static_cast<unsigned long long>(seed), n, before.near_60, after.near_60, before.obtuse, after.obtuse);
-    EXPECT_GT(after.near_60, before.near_60 + 0.2) << "seed " << seed;
-    EXPECT_LT(after.obtuse, before.obtuse / 2) << "seed " << seed;
   }
+  EXPECT_GT(momentum_total, plain_total);
+}
+
+TEST(Relaxation, StopsWhenTheCallbackSaysSoAndRefusesNegativeSweeps) {
+  const PeriodicBox box(1, 1);
+  Rng rng(1);
+  Packing p = sample_mps(box, 0.05, rng);
+  int calls = 0;
+  relax(p, 1.2, 10, rng, [&](int) { return ++calls < 3; });
+  EXPECT_EQ(calls, 3);
+  EXPECT_EQ(relax(p, 1.2, 0, rng), 0u);
+  EXPECT_THROW(relax(p, 1.2, -1, rng), InvalidInput);
+  EXPECT_THROW(relax(p, 0, 5, rng), InvalidInput);
 }
 
 // One radius, and a sizing (the feature sizing, smaller near the notch and the holes),
@@ -94,13 +125,24 @@ TEST(Relaxation, KeepsAPlanarDomainsBoundaryDisksAndItsPackingValid) {
         if (p.flags(id) & kFixed) fixed[id] = p.center(id);
       ASSERT_FALSE(fixed.empty());
       const double spacing = hex_spacing(static_cast<double>(n) / density_unit(p, domain->area()));
-      std::size_t moved = 0;
-      for (int sweep = 1; sweep <= 10; ++sweep) {
-        moved += relax(p, spacing, rng);
-        ASSERT_EQ(p.size(), n);
+      const auto judge = [&](int sweep) {
+        EXPECT_EQ(p.size(), n);
         const oracle::PlanarReport rep = test::check_with_oracle(p, *domain);
-        ASSERT_TRUE(rep.ok()) << (sized ? "auto:0.04" : "r 0.03") << " seed " << seed << " sweep " << sweep << ": "
+        EXPECT_TRUE(rep.ok()) << (sized ? "auto:0.04" : "r 0.03") << " seed " << seed << " sweep " << sweep << ": "
                               << rep.summary();
+        return rep.ok();
+      };
+      // Seeds 1 and 2 sweep by sweep, seed 3 with momentum (the oracle after every sweep).
+      std::size_t moved = 0;
+      if (seed < 3) {
+        for (int sweep = 1; sweep <= 10; ++sweep) {
+          moved += relax(p, spacing, rng);
+          ASSERT_TRUE(judge(sweep));
+        }
+      } else {
+        int sweeps = 0;
+        moved = relax(p, spacing, 10, rng, [&](int k) { return ++sweeps == k && judge(k); });
+        ASSERT_EQ(sweeps, 10);
       }
       EXPECT_GT(moved, n);  // most disks moved, some several times
       for (const auto& [id, at] : fixed) {
@@ -143,11 +185,22 @@ TEST(Relaxation, KeepsASurfacePackingValidItsFeaturesFixedAndItsMeshsTopology) {
       ASSERT_FALSE(fixed.empty());
       const test::AngleShares before = test::angle_shares(restricted_delaunay(p));
       const double spacing = hex_spacing(static_cast<double>(n) / density_unit(p));
-      for (int sweep = 1; sweep <= 12; ++sweep) {
-        relax(p, spacing, rng);
-        ASSERT_EQ(p.size(), n);
+      const auto judge = [&](int sweep) {
+        EXPECT_EQ(p.size(), n);
         const auto rep = test::surface_report(p);
-        ASSERT_TRUE(rep.ok()) << file << " " << spec << " seed " << seed << " sweep " << sweep << ": " << rep.summary();
+        EXPECT_TRUE(rep.ok()) << file << " " << spec << " seed " << seed << " sweep " << sweep << ": " << rep.summary();
+        return rep.ok();
+      };
+      // Seed 1 sweep by sweep, seed 2 with momentum (the oracle after every sweep both ways).
+      if (seed == 1) {
+        for (int sweep = 1; sweep <= 12; ++sweep) {
+          relax(p, spacing, rng);
+          ASSERT_TRUE(judge(sweep));
+        }
+      } else {
+        int sweeps = 0;
+        relax(p, spacing, 12, rng, [&](int k) { return ++sweeps == k && judge(k); });
+        ASSERT_EQ(sweeps, 12);
       }
       for (const auto& [id, at] : fixed) {
         ASSERT_TRUE(p.alive(id));

@@ -57,6 +57,9 @@ std::size_t attractor_eject(SurfacePacking& packing, DiskId p, Rng& rng, std::si
 std::size_t wide_attractor_eject(SurfacePacking& packing, DiskId p, Rng& rng, std::size_t max_removed);
 /// Relaxation on a surface (tuning.h): each step in the tangent plane at the disk.
 std::size_t relax(SurfacePacking& packing, double spacing, Rng& rng);
+/// Several sweeps with momentum (tuning.h).
+std::size_t relax(SurfacePacking& packing, double spacing, int sweeps, Rng& rng,
+                  const std::function<bool(int)>& after_sweep = {});
 /// For each angle above 90 degrees in `mesh` (the packing's restricted Delaunay mesh,
 /// vertex i its i-th live disk), moves the free disk at it radially away from the
 /// midpoint of the opposite edge, to just outside the circle with that edge as diameter

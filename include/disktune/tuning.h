@@ -194,6 +194,14 @@ std::size_t wide_attractor_eject(Packing& packing, DiskId p, Rng& rng, std::size
 /// maximal. Returns how many disks moved; throws InvalidInput for a spacing <= 0.
 std::size_t relax(Packing& packing, double spacing, Rng& rng);
 
+/// `sweeps` sweeps of relax, each disk's step adding half its step of the sweep before
+/// (momentum: density differences travel across the packing faster than the springs'
+/// local pull alone carries them; remesh and `tune --relax` use this). `after_sweep(k)`,
+/// if given, runs after sweep k and stops the run by returning false. Returns the moves
+/// over all sweeps; throws InvalidInput for a spacing <= 0 or sweeps < 0.
+std::size_t relax(Packing& packing, double spacing, int sweeps, Rng& rng,
+                  const std::function<bool(int)>& after_sweep = {});
+
 /// Injection for angles (2.4), one sweep: the circumcenter of every obtuse triangle of
 /// the periodic Delaunay triangulation, in random order, is used as a repeller point
 /// (triangles whose disks moved meanwhile wait for the next sweep). Returns the number

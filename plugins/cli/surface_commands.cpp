@@ -177,7 +177,7 @@ int run_surface_tune(const TuneJob& job) {
       start, target, job.method, [&](const TuneOptions& options) { return tune(packing, job.target, rng, options); },
       job.output, write_output);
   const double spacing = relax_spacing(packing.size(), domain.unit);
-  for (int k = 0; k < job.relax_sweeps; ++k) relax(packing, spacing, rng);
+  relax(packing, spacing, job.relax_sweeps, rng);
   const double seconds = seconds_since(t0);
 
   if (!job.output.empty()) write_output();

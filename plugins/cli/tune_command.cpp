@@ -64,7 +64,7 @@ int run_tune(const TuneJob& job) {
       [&](const TuneOptions& options) { return domain.tune(packing, job.target, rng, options); }, job.output,
       write_output);
   const double spacing = relax_spacing(packing.size(), domain.unit);
-  for (int k = 0; k < job.relax_sweeps; ++k) relax(packing, spacing, rng);
+  relax(packing, spacing, job.relax_sweeps, rng);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
   if (!job.output.empty()) write_output();

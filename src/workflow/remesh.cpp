@@ -73,12 +73,12 @@ RemeshResult remesh(std::shared_ptr<const SurfaceDomain> surface, std::size_t ve
   const double eta = static_cast<double>(packing.size()) / density_unit(packing);
   const double spacing = 1 / relative_radius_for(eta);
   const Progress progress{packing.size(), eta, Phase::relaxation};
-  for (int k = 0; k < options.relax_sweeps; ++k) {
-    relax(packing, spacing, rng);
-    if (options.tune.on_progress && !options.tune.on_progress(progress)) {
-      throw Cancelled("remesh: cancelled by the progress callback during relaxation");
-    }
-  }
+  bool cancelled = false;
+  relax(packing, spacing, options.relax_sweeps, rng, [&](int) {
+    cancelled = options.tune.on_progress && !options.tune.on_progress(progress);
+    return !cancelled;
+  });
+  if (cancelled) throw Cancelled("remesh: cancelled by the progress callback during relaxation");
 
   out.mesh = restricted_delaunay(packing);
   // Relaxation leaves about one triangle in a hundred obtuse: open those angles and mesh
