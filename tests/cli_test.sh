@@ -100,6 +100,8 @@ expect tune-relax-report 0 "^report: 900 disks, .*maximal, conflict-free" -- "$b
 expect tune-relax-domain 0 "reached.*, relaxed 3 sweeps" -- "$bin" tune --domain "$data/domains/notch_and_holes.poly" --radius 0.03 --target-fraction 0.6 --relax 3 --output trd.csv
 expect tune-relax-domain-report 0 "maximal, conflict-free" -- "$bin" report trd.csv --domain "$data/domains/notch_and_holes.poly" --radius 0.03
 expect tune-relax-negative 2 "--relax" -- "$bin" tune --radius 0.03 --target-count 900 --relax -1
+# A file's radii decide the advice: one radius asks for it, varying radii for the sizing.
+expect radius-file-one-radius 2 "trd.csv:2: radius 0.03 differs .* by the sizing .*every disk in the file has that radius: give the radius the packing was made with, 0.03 \(--radius 0.03\)" -- "$bin" report trd.csv --domain "$data/domains/notch_and_holes.poly" --sizing auto:0.04
 expect tune-two-targets 2 "excludes" -- "$bin" tune --radius 0.03 --target-count 900 --target-rho 0.9
 expect tune-no-target 2 "give one target" -- "$bin" tune --radius 0.03
 expect tune-too-dense 2 "densest packing" -- "$bin" tune --radius 0.03 --target-count 5000
@@ -247,7 +249,8 @@ expect far-radius 2 "times the radius 0.005.*use a radius of at least 0.01" -- "
 expect sizing-sample 0 "sizing 0.03 \+ 0.03\*x" -- "$bin" sample --domain hole.poly --sizing "0.03 + 0.03*x" --output v.csv
 expect sizing-tune 0 "reached" -- "$bin" tune --domain hole.poly --sizing "0.03 + 0.03*x" --input v.csv --target-fraction 0.7 --output v7.csv
 expect sizing-report 0 "maximal, conflict-free" -- "$bin" report v7.csv --domain hole.poly --sizing "0.03 + 0.03*x" --json v7.json
-expect sizing-wrong-radius 2 "v7.csv:2: radius .* sizing .*give the sizing it was made with \(--sizing\)" -- "$bin" report v7.csv --domain hole.poly --sizing "0.02 + 0.03*x"
+expect sizing-wrong-radius 2 "v7.csv:2: radius .* sizing .*the file's radii run from .*give the sizing the packing was made with \(--sizing\)" -- "$bin" report v7.csv --domain hole.poly --sizing "0.02 + 0.03*x"
+expect sizing-file-given-a-radius 2 "v7.csv:[0-9]+: radius .* differs from the radius 0.03 .*the file's radii run from .*give the sizing the packing was made with \(--sizing\)" -- "$bin" report v7.csv --domain hole.poly --radius 0.03
 expect sizing-periodic 0 "sample: [0-9]+ disks" -- "$bin" sample --sizing "0.03 + 0.01*sin(2*pi*x)" --output vp.csv
 expect sizing-both 2 "one of the two" -- "$bin" sample --radius 0.05 --sizing 0.05
 expect sizing-neither 2 "one of the two" -- "$bin" sample --output z.csv
@@ -281,6 +284,7 @@ expect surface-mesh 0 "^mesh: 420 disks, 420 vertices, [0-9]+ triangles \(restri
 sed -n 2p e4.off | grep -qE "^420 [0-9]+ 0$" && pass=$((pass + 1)) || { echo "FAIL surface mesh OFF header"; fails=$((fails + 1)); }
 expect surface-report 0 "^report: 420 disks, eta = 0\.6[0-9]+, rho = [0-9.]+, maximal, conflict-free; mesh: .*manifold yes, genus 2" -- "$bin" report e4.csv --domain "$eight" --radius 0.045 --json e4.json
 grep -q '"maximal": true' e4.json && grep -q '"hausdorff"' e4.json && grep -q '"local_beta"' e4.json && pass=$((pass + 1)) || { echo "FAIL surface report JSON"; fails=$((fails + 1)); }
+expect surface-file-one-radius 2 "e4.csv:2: radius 0.045 differs .* the sizing curvature.*every disk in the file has that radius: give the radius the samples were made with, 0.045 \(--radius 0.045\)" -- "$bin" report e4.csv --domain "$eight" --sizing curvature
 expect surface-mesh-ply 0 "-> e4.ply" -- "$bin" mesh e4.csv --domain "$eight" --radius 0.045 --output e4.ply
 expect surface-from-ply 0 "surface e4\.ply \(420 vertices, [0-9]+ triangles, genus 2, closed" -- "$bin" sample --domain e4.ply --radius 0.05
 expect surface-curvature 0 "^sample: [0-9]+ disks, .*sizing curvature .*genus 0, closed" -- "$bin" sample --domain "$data/surfaces/sphere.off" --sizing curvature --output sc.csv

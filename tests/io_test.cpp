@@ -82,6 +82,19 @@ TEST(PointsCsv, MismatchNamesWhatToChange) {
     EXPECT_EQ(e.remedy(), InvalidInput::Remedy::radius);
     EXPECT_EQ(e.value(), "0.03");
   }
+  // Radii that vary in the file: it was made with a sizing, whatever was asked for.
+  write_text(dir.file("v.csv"), "x,y,r\n0.2,0.5,0.02\n0.6,0.5,0.03\n");
+  try {
+    read_packing_csv(dir.file("v.csv"), PeriodicBox(), 0.02);
+    ADD_FAILURE() << "accepted a radius of 0.03 for 0.02";
+  } catch (const InvalidInput& e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find("v.csv:3: radius 0.03 differs from the radius 0.02"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("the file's radii run from 0.02 to 0.03: give the sizing the packing was made with"),
+              std::string::npos)
+        << msg;
+    EXPECT_EQ(e.remedy(), InvalidInput::Remedy::sizing);
+  }
   write_text(dir.file("box.csv"), "x,y,r\n1.5,0.5,0.1\n");
   try {
     read_packing_csv(dir.file("box.csv"), PeriodicBox(), 0.1);

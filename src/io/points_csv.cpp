@@ -9,6 +9,7 @@
 #include "disktune/io.h"
 #include "csv_numbers.h"
 #include "number_text.h"
+#include "radius_mismatch.h"
 
 namespace disktune {
 namespace {
@@ -131,13 +132,10 @@ void read_packing_csv(const std::string& path, Packing& packing) {
     const double r = packing.radius_at(c);
     if (std::abs(p.r - r) > kRelTol * r) {
       where << "radius " << p.r << " differs from the radius " << r << " asked for at its center";
-      if (packing.sizing()) {
-        where << " by the sizing " << packing.sizing()->description() << "; give the sizing it was made with";
-        throw InvalidInput(where.str(), InvalidInput::Remedy::sizing);
-      }
-      // Without a sizing every disk has the one radius asked for.
-      where << "; give the radius the packing was made with, " << detail::number_text(p.r);
-      throw InvalidInput(where.str(), InvalidInput::Remedy::radius, detail::number_text(p.r));
+      if (packing.sizing()) where << " by the sizing " << packing.sizing()->description();
+      const auto [lo, hi] = std::minmax_element(records.begin(), records.end(),
+                                                [](const PointRecord& a, const PointRecord& b) { return a.r < b.r; });
+      detail::throw_radius_mismatch(where, lo->r, hi->r, "packing was");
     }
     packing.insert(c, r);
   }

@@ -14,6 +14,7 @@
 #include "disktune/io.h"
 #include "disktune/surface_io.h"
 #include "polygon_soup.h"
+#include "radius_mismatch.h"
 
 namespace disktune {
 namespace {
@@ -89,12 +90,13 @@ void read_surface_csv(const std::string& path, SurfacePacking& packing) {
     if (std::abs(r_given - r) > kRadiusMatch * r) {
       where << "radius " << r_given << " differs from the radius " << r;
       if (packing.sizing().is_constant()) {
-        where << " asked for; give the radius the samples were made with, " << detail::number_text(r_given);
-        throw InvalidInput(where.str(), InvalidInput::Remedy::radius, detail::number_text(r_given));
+        where << " asked for";
+      } else {
+        where << " the sizing " << packing.sizing().description() << " gives at " << detail::point_text(p);
       }
-      where << " the sizing " << packing.sizing().description() << " gives at " << detail::point_text(p)
-            << "; give the sizing the samples were made with";
-      throw InvalidInput(where.str(), InvalidInput::Remedy::sizing);
+      double lo = r_given, hi = r_given;
+      for (std::size_t i = 0; i < rows.rows(); ++i) lo = std::min(lo, rows.at(i, 3)), hi = std::max(hi, rows.at(i, 3));
+      detail::throw_radius_mismatch(where, lo, hi, "samples were");
     }
     // A disk on an edge of a fixed curve (open boundary, feature) is fixed, as sampling
     // made it.
