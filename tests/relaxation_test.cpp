@@ -185,10 +185,11 @@ TEST(Relaxation, KeepsASurfacePackingValidItsFeaturesFixedAndItsMeshsTopology) {
       ASSERT_FALSE(fixed.empty());
       const test::AngleShares before = test::angle_shares(restricted_delaunay(p));
       const double spacing = hex_spacing(static_cast<double>(n) / density_unit(p));
+      const std::string what = std::string(file) + " " + spec;  // (lambdas cannot capture bindings in C++17)
       const auto judge = [&](int sweep) {
         EXPECT_EQ(p.size(), n);
         const auto rep = test::surface_report(p);
-        EXPECT_TRUE(rep.ok()) << file << " " << spec << " seed " << seed << " sweep " << sweep << ": " << rep.summary();
+        EXPECT_TRUE(rep.ok()) << what << " seed " << seed << " sweep " << sweep << ": " << rep.summary();
         return rep.ok();
       };
       // Seed 1 sweep by sweep, seed 2 with momentum (the oracle after every sweep both ways).
