@@ -184,10 +184,9 @@ TEST(BoundarySpacing, TuningKeepsTheAngleBound) {
         Rng rng(seed);
         Packing p = sample_mps(c.domain, c.r, rng);
         tune(p, *c.domain, Target::area_fraction(eta), rng);
-        // The 1D target rounds the count of 1.2 r steps, so tuning can leave a step a
-        // little over sqrt(2) r (1.49 r seen in square_with_hole at 0.4): the proven
-        // claim where the steps allow it, figures otherwise.
-        expect_bound(c, p, "eta " + std::to_string(eta).substr(0, 3) + " seed " + std::to_string(seed), false);
+        // Tuning spaces the boundary toward the target's spacing (1.5 r at 0.4) but never
+        // wider than 1.35 r, so the layout's claim holds after it too.
+        expect_bound(c, p, "eta " + std::to_string(eta).substr(0, 3) + " seed " + std::to_string(seed), true);
       }
     }
   }

@@ -17,6 +17,12 @@ namespace disktune {
 /// Which way boundary tuning may change each curve's disk count.
 enum class BoundaryChange { any, only_more, only_fewer };
 
+/// The longest even boundary step tune() lets tune_boundary plan, in units of r, however
+/// sparse the target: below the sqrt(2) r under which no interior center fits in the
+/// circle on two consecutive boundary disks (the angle bound of docs/planar.md,
+/// "Boundary spacing"), with room for a sizing's change along one step.
+constexpr double kLongestTunedStep = 1.35;
+
 /// The boundary disks in order along each loop of the domain (loop 0 outer).
 using BoundaryLoops = std::vector<std::vector<DiskId>>;
 
@@ -50,9 +56,11 @@ void fill_boundary_voids(Packing& packing, const PlanarDomain& domain, Rng& rng)
 /// at most `budget` disks in all (each scaled down alike): tune() passes the way to its
 /// target and how many disks are missing, as in a thin domain nearly every disk is on
 /// the boundary, and spacing it for the interior's density would overshoot the target.
+/// No segment gets so few disks that its even steps exceed `longest_step` r where it has
+/// room for more (tune() passes kLongestTunedStep).
 void tune_boundary(Packing& packing, const PlanarDomain& domain, double spacing_factor, Rng& rng,
                    BoundaryChange change = BoundaryChange::any,
-                   std::size_t budget = static_cast<std::size_t>(-1));
+                   std::size_t budget = static_cast<std::size_t>(-1), double longest_step = 2);
 
 /// 1D injection or ejection until the boundary holds `change` disks more (fewer when
 /// negative), shared among the segments in proportion to their lengths, as far as the

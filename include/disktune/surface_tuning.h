@@ -35,7 +35,8 @@ TuneResult tune(SurfacePacking& packing, const Target& target, Rng& rng, const T
 /// holds the number of disks that spaces them spacing_factor times the local radius
 /// (the sizing's, at each point; kept within [r, 2r] per step), or no step changes the
 /// count for a while (a step that changes no count is retried on a run of consecutive
-/// disks laid out again evenly; sweeps even out the gaps at the end, as in the plane).
+/// disks laid out again evenly; at the end the loop is laid out evenly at once where
+/// valid, else sweeps even out the gaps, as in the plane).
 /// After every step the boundary disks stay max(r_i, r_j) apart in
 /// space and cover the boundary, interior disks they conflict with are gone and the
 /// voids refilled. tune() does this first, at the spacing of a hexagonal packing of the

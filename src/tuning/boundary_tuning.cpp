@@ -48,11 +48,11 @@ class PlanarCurves {
 }  // namespace
 
 void tune_boundary(Packing& packing, const PlanarDomain& domain, double spacing_factor, Rng& rng,
-                   BoundaryChange change, std::size_t budget) {
+                   BoundaryChange change, std::size_t budget, double longest_step) {
   boundary_loops(packing, domain);  // flags the boundary disks (a packing read from a file)
   PlanarCurves curves(packing, domain);
   detail::CurveTuner<PlanarCurves> tuner(curves);
-  tuner.tune([&](std::size_t) { return spacing_factor; }, rng, change, budget);
+  tuner.tune([&](std::size_t) { return spacing_factor; }, rng, change, budget, longest_step);
 }
 
 long boundary_tune_by(Packing& packing, const PlanarDomain& domain, long change, Rng& rng) {

@@ -104,9 +104,10 @@ class CurveTuner {
   std::size_t curve_count() const { return curves_.size(); }
 
   /// The number of movable disks curve c should hold at spacing `factor` r(s): the
-  /// integral of ds / (factor r(s)) steps (as in a hexagonal packing's boundary), kept
-  /// within what 1D maximality (steps <= 2r) and conflict-freedom (steps >= r) allow.
-  std::size_t target(std::size_t c, double factor) const {
+  /// integral of ds / (factor r(s)) steps (as in a hexagonal packing's boundary), but
+  /// never so few that even steps exceed `longest` r, kept within what 1D maximality
+  /// (steps <= 2r) and conflict-freedom (steps >= r) allow.
+  std::size_t target(std::size_t c, double factor, double longest) const {
     const Curve<Pos>& cv = curves_[c];
     const double len = cv.length();
     const int pieces = 64;
@@ -118,7 +119,8 @@ class CurveTuner {
     }
     const double lo = std::ceil(len / (2 * r_min) * (1 - 1e-12)), hi = std::floor(len / r_max * (1 + 1e-12));
     const double fewest = std::max(lo, cv.closed ? 3.0 : 1.0), most = std::max(hi, fewest);
-    const double n = std::clamp(std::round(sum), fewest, most);
+    const double close = std::ceil(sum * factor / longest * (1 - 1e-12));
+    const double n = std::clamp(std::max(std::round(sum), close), fewest, most);
     return static_cast<std::size_t>(n) - (cv.closed ? 0 : 1);
   }
 
@@ -149,17 +151,18 @@ class CurveTuner {
     return net;
   }
 
-  /// Every curve toward its count at spacing factor_of(c) r (target), each curve's count
-  /// moving only the way `change` allows, and by at most `budget` disks over all curves
-  /// (each curve's change scaled down alike when they add up to more); then its gaps
-  /// evened out. Returns the net number of disks added.
+  /// Every curve toward its count at spacing factor_of(c) r, with no even step over
+  /// `longest` r (target), each curve's count moving only the way `change` allows, and
+  /// by at most `budget` disks over all curves (each curve's change scaled down alike
+  /// when they add up to more); then its gaps evened out. Returns the net number of
+  /// disks added.
   template <class FactorOf>
   long tune(FactorOf factor_of, Rng& rng, BoundaryChange change = BoundaryChange::any,
-            std::size_t budget = static_cast<std::size_t>(-1)) {
+            std::size_t budget = static_cast<std::size_t>(-1), double longest = 2) {
     std::vector<long> delta(curves_.size());
     double total = 0;
     for (std::size_t c = 0; c < curves_.size(); ++c) {
-      delta[c] = static_cast<long>(target(c, factor_of(c))) - static_cast<long>(movable_count(c));
+      delta[c] = static_cast<long>(target(c, factor_of(c), longest)) - static_cast<long>(movable_count(c));
       if (change == BoundaryChange::only_more) delta[c] = std::max(delta[c], 0L);
       if (change == BoundaryChange::only_fewer) delta[c] = std::min(delta[c], 0L);
       total += static_cast<double>(std::abs(delta[c]));
@@ -223,53 +226,60 @@ class CurveTuner {
       }
       if (lo == prev_lo && hi == prev_hi) return {};
       prev_lo = lo, prev_hi = hi;
-      const long k = hi - lo + 1, k_new = k + delta;
-      if (k_new < 0) continue;
-      const double from = arc(c, lo - 1), to = arc(c, hi + 1);
-      const std::vector<double> at = even_sites(c, from, to, static_cast<std::size_t>(k_new));
-      Plan plan;
-      for (long h = lo; h <= hi; ++h) plan.lifted.push_back(disks_[c][index(c, h)].id);
-      std::vector<DiskId> run(plan.lifted.begin(), plan.lifted.end());
-      bool ok = true;
-      for (const double s : at) {
-        const Point x = point_at_arc(c, s);
-        if (!feasible(A::pos(x), a_.radius_at(x), plan, kNoDisk)) {
-          ok = false;
-          break;
-        }
-        plan.placed.push_back({A::pos(x), a_.radius_at(x)});
-      }
-      if (!ok) continue;
-      std::vector<Ball> balls;
-      for (const DiskId id : run) balls.push_back(ball(id));
-      if (!balls_covered(balls, plan)) continue;
-      // The run's disks keep their order; the middle one goes (or the middle site is new).
-      std::vector<DiskId> removed;
-      std::vector<std::pair<DiskId, double>> moved;
-      std::vector<double> added;
-      const std::size_t mid = run.size() / 2;
-      if (delta < 0) {
-        removed.push_back(run[mid]);
-        run.erase(run.begin() + static_cast<long>(mid));
-        for (std::size_t h = 0; h < run.size(); ++h) moved.push_back({run[h], at[h]});
-      } else {
-        for (std::size_t h = 0, g = 0; h < at.size(); ++h) {
-          if (h == mid && delta > 0) {
-            added.push_back(at[h]);
-          } else {
-            moved.push_back({run[g++], at[h]});
-          }
-        }
-      }
-      apply(c, removed, moved, added, rng);
-      return {true, delta};
+      if (relay(c, lo, hi, delta, rng)) return {true, delta};
     }
   }
 
-  /// Sweeps over curve c moving each movable disk to the middle (in ds / r(s)) of its
-  /// neighbours where that is valid, so gaps a step left uneven even out; the count stays.
+  /// The run of disks lo..hi of curve c (indices; a closed curve's wrap) laid out again
+  /// with `delta` disks more or fewer, evenly in ds / r(s) between the two disks that
+  /// bound it, which stay. Applied only when every placed disk is feasible and the curve
+  /// stays covered; returns whether it was.
+  bool relay(std::size_t c, long lo, long hi, long delta, Rng& rng) {
+    const long k = hi - lo + 1, k_new = k + delta;
+    if (k_new < 0) return false;
+    const std::vector<double> at = even_sites(c, arc(c, lo - 1), arc(c, hi + 1), static_cast<std::size_t>(k_new));
+    Plan plan;
+    for (long h = lo; h <= hi; ++h) plan.lifted.push_back(disks_[c][index(c, h)].id);
+    std::vector<DiskId> run(plan.lifted.begin(), plan.lifted.end());
+    for (const double s : at) {
+      const Point x = point_at_arc(c, s);
+      if (!feasible(A::pos(x), a_.radius_at(x), plan, kNoDisk)) return false;
+      plan.placed.push_back({A::pos(x), a_.radius_at(x)});
+    }
+    std::vector<Ball> balls;
+    for (const DiskId id : run) balls.push_back(ball(id));
+    if (!balls_covered(balls, plan)) return false;
+    // The run's disks keep their order; the middle one goes (or the middle site is new).
+    std::vector<DiskId> removed;
+    std::vector<std::pair<DiskId, double>> moved;
+    std::vector<double> added;
+    const std::size_t mid = run.size() / 2;
+    if (delta < 0) {
+      removed.push_back(run[mid]);
+      run.erase(run.begin() + static_cast<long>(mid));
+      for (std::size_t h = 0; h < run.size(); ++h) moved.push_back({run[h], at[h]});
+    } else {
+      for (std::size_t h = 0, g = 0; h < at.size(); ++h) {
+        if (h == mid && delta > 0) {
+          added.push_back(at[h]);
+        } else {
+          moved.push_back({run[g++], at[h]});
+        }
+      }
+    }
+    apply(c, removed, moved, added, rng);
+    return true;
+  }
+
+  /// Curve c's gaps evened out, its count kept: all its movable disks laid out evenly at
+  /// once where that is valid (sweeps of local moves smooth a long curve only slowly),
+  /// else sweeps moving each movable disk to the middle (in ds / r(s)) of its neighbours.
   void even_out(std::size_t c, int sweeps, Rng& rng) {
     const bool closed = curves_[c].closed;
+    const long m = static_cast<long>(disks_[c].size());
+    if (closed ? m >= 3 : m >= 3 && !movable(c, 0) && !movable(c, static_cast<std::size_t>(m - 1))) {
+      if (relay(c, 1, closed ? m - 1 : m - 2, 0, rng)) return;  // a closed curve keeps disk 0 where it is
+    }
     for (int sweep = 0; sweep < sweeps; ++sweep) {
       bool any = false;
       for (std::size_t i = 0; i < disks_[c].size(); ++i) {

@@ -75,7 +75,8 @@ TuneResult tune(Packing& packing, const PlanarDomain& domain, const Target& targ
                        "use void, repeller or crystal injection");
   }
   // The boundary first, at the spacing of a hexagonal packing of the target's count:
-  // r / rho, rho = sqrt(eta 2 sqrt3 / pi) the target's relative radius.
+  // r / rho, rho = sqrt(eta 2 sqrt3 / pi) the target's relative radius; but no step over
+  // kLongestTunedStep r, so no interior disk encroaches on the boundary.
   const std::size_t goal = target_count(target, packing, domain.area());
   const double eta = static_cast<double>(goal) / density_unit(packing, domain.area());
   const BoundaryChange change = goal > packing.size()   ? BoundaryChange::only_more
@@ -83,7 +84,7 @@ TuneResult tune(Packing& packing, const PlanarDomain& domain, const Target& targ
                                                         : BoundaryChange::any;
   const std::size_t missing = goal > packing.size() ? goal - packing.size() : packing.size() - goal;
   return detail::as_transaction(packing, [&](const Packing& entry) {
-    tune_boundary(packing, domain, 1 / relative_radius_for(eta), rng, change, missing);
+    tune_boundary(packing, domain, 1 / relative_radius_for(eta), rng, change, missing, kLongestTunedStep);
     return tune_in(packing, entry, domain.area(), target, rng, options, t0);
   });
 }
