@@ -68,7 +68,7 @@ checks() {
     'PlanarProperty\.(OracleAfterEveryOperation|TargetsOnBothSides)'
     'PeriodicProperty\.(OracleAfterEveryOperation|TargetsOnBothSides)'
     'ConstrainedDelaunay\.ManyPointsAndARoundHole' 'BoundaryTuning\.PlanarSteps'
-    'Remesh\.GivesExactly' 'PlanarTuning/InDomain\.TuneDownTo04'
+    'Remesh\.(GivesExactly|WhereTheSurface)' 'PlanarTuning/InDomain\.TuneDownTo04'
     'FeatureMeshing\.' 'FeatureSampling\.(Fandisk|Tuning)' 'BoundarySpacing\.TuningKeeps')
   local slow="^($(IFS='|'; echo "${skip[*]}"))"
   ASAN_OPTIONS=halt_on_error=1:detect_leaks=1:print_stacktrace=1 \

@@ -9,9 +9,11 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <vector>
 
 #include "disktune/surface_domain.h"
 #include "disktune/surface_mesh.h"
+#include "disktune/surface_sizing.h"
 #include "disktune/tuning.h"
 
 namespace disktune {
@@ -49,12 +51,21 @@ struct RemeshResult {
   SurfaceMesh mesh;
   /// Manifold? Genus (compare with the input's)? Isolated vertices?
   SurfaceMeshCheck check;
-  double radius = 0;  // the conflict radius: vertices at least this far apart
+  /// The conflict radius where the surface leaves room: vertices at least this far
+  /// apart, but for where `sizing` is smaller.
+  double radius = 0;
+  /// The radii the vertices were placed with: `radius` everywhere, or smaller where
+  /// another part of the surface faces a point closer than radius / 0.45 (a thin wall,
+  /// a ledge: thickness_sizing), where one radius would give a mesh that is no manifold.
+  SurfaceSizing sizing;
+  /// Vertex i's radius (the sizing at it), for measuring edges in units of r.
+  std::vector<double> radii;
   TuneResult tuning;
 };
 
-/// Samples `surface` at the radius for `vertex_count` vertices, tunes the count to
-/// exactly that, relaxes the packing and meshes the result. Same seed, same mesh. Throws InvalidInput for
+/// Samples `surface` at the radius for `vertex_count` vertices (smaller in thin parts:
+/// RemeshResult::sizing), tunes the count to exactly that, relaxes the packing and
+/// meshes the result. Same seed, same mesh. Throws InvalidInput for
 /// fewer than 4 vertices, an area fraction outside (0, 0.9069], a feature angle outside
 /// [0, 180), a negative number of relaxation sweeps, or more vertices than memory can hold; Cancelled when the progress callback
 /// cancels.

@@ -3,6 +3,7 @@
 // .stl that is not flat): samples as CSV x,y,z,r, the restricted Delaunay mesh as OFF,
 // OBJ or PLY, and a JSON report. Each command's file dispatches here when
 // names_surface(--domain) holds (command_domain.h decides).
+#include <algorithm>
 #include <charconv>
 #include <chrono>
 #include <cmath>
@@ -93,27 +94,31 @@ std::string topology_text(const SurfaceMeshCheck& check, const SurfaceDomain& su
 }
 
 // On stderr when the mesh is no manifold of the input's genus; `done` says what was
-// still done with it ("written", "measured").
-void warn_topology(const SurfaceMeshCheck& check, const SurfaceDomain& surface, const char* done) {
+// still done with it ("written", "measured"), `denser` how to ask for denser samples.
+void warn_topology(const SurfaceMeshCheck& check, const SurfaceDomain& surface, const char* done,
+                   const char* denser = "use a smaller radius") {
   if (!check.manifold) {
     std::fprintf(stderr,
                  "disktune: warning: the restricted Delaunay mesh is not a manifold (%zu edges in "
                  "more than two triangles, %zu bow-tie vertices); it was still %s. The samples are "
-                 "too sparse for the surface: use a smaller radius, or --sizing auto:R (smaller "
-                 "where the surface faces itself closely, as thin walls and ledges do)\n",
-                 check.non_manifold_edges, check.non_manifold_vertices, done);
+                 "too sparse for the surface: %s\n",
+                 check.non_manifold_edges, check.non_manifold_vertices, done,
+                 std::string(denser) == "use a smaller radius"
+                     ? "use a smaller radius, or --sizing auto:R (smaller where the surface faces itself "
+                       "closely, as thin walls and ledges do)"
+                     : denser);
   } else if (check.boundary_loops != surface.boundary_loops().size()) {
     std::fprintf(stderr,
                  "disktune: warning: the restricted Delaunay mesh has %zu boundary loops, the input "
                  "surface %zu: it has holes; it was still %s. The samples are too sparse for the "
-                 "surface there: use a smaller radius\n",
-                 check.boundary_loops, surface.boundary_loops().size(), done);
+                 "surface there: %s\n",
+                 check.boundary_loops, surface.boundary_loops().size(), done, denser);
   } else if (check.genus != surface.genus()) {
     std::fprintf(stderr,
                  "disktune: warning: the restricted Delaunay mesh has genus %d, the input surface "
                  "genus %d; it was still %s. The samples are too sparse to capture the surface's "
-                 "topology: use a smaller radius\n",
-                 check.genus, surface.genus(), done);
+                 "topology: %s\n",
+                 check.genus, surface.genus(), done, denser);
   }
 }
 
@@ -343,11 +348,20 @@ int run_surface_remesh(const RemeshJob& job) {
                      },
                      "", [] {});
   const double seconds = seconds_since(t0);
+  if (!result.sizing.is_constant()) {
+    const std::vector<double>& radii = result.sizing.vertex_radii();
+    const auto thinnest = static_cast<std::size_t>(std::min_element(radii.begin(), radii.end()) - radii.begin());
+    const Vec3 at = surface->vertices()[thinnest];
+    std::fprintf(stderr,
+                 "disktune: note: with one radius the mesh was no manifold of the input's topology, so the "
+                 "vertices were placed again with r = %.4g where the surface leaves room and smaller radii where "
+                 "parts of it face each other closer than r / 0.45, down to %.4g near (%.4g, %.4g, %.4g)\n",
+                 result.radius, radii[thinnest], at.x, at.y, at.z);
+  }
   write_surface_mesh(job.output, result.mesh);
-  const std::vector<double> radius(result.mesh.vertices.size(), result.radius);
   SurfaceMeshQuality q;
   if (!result.mesh.triangles.empty()) {
-    q = measure_surface_mesh(result.mesh, radius);
+    q = measure_surface_mesh(result.mesh, result.radii);
     q.hausdorff = hausdorff_distance(result.mesh, *surface, 10000, 1);
   }
   if (!job.json.empty()) {
@@ -373,7 +387,7 @@ int run_surface_remesh(const RemeshJob& job) {
       q.angles.min, q.angles.max, 100 * q.angles.fraction_50_70, 100 * q.angles.fraction_obtuse_triangles,
       q.hausdorff, result.radius, seconds, job.output.c_str(), job.json.empty() ? "" : ", ", job.json.c_str());
   if (!result.check.problems.empty()) std::printf("remesh: %s\n", result.check.problems.c_str());
-  warn_topology(result.check, *surface, "written");
+  warn_topology(result.check, *surface, "written", "ask for more vertices");
   if (!result.tuning.reached) {
     std::fprintf(stderr,
                  "disktune: remesh reached %zu vertices, not %zu: tuning found no way to the exact count; the "

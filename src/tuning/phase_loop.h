@@ -11,12 +11,33 @@
 #include <string>
 #include <vector>
 
+#include "disktune/boundary.h"
 #include "disktune/errors.h"
 #include "disktune/surface_tuning.h"
 #include "disktune/tuning.h"
 #include "../voids/final_check.h"
 
 namespace disktune::detail {
+
+/// What the boundary step before the phases may do: move the count only toward `goal`,
+/// by at most the disks missing.
+struct BoundaryBudget {
+  BoundaryChange change;
+  std::size_t missing;
+
+  BoundaryBudget(std::size_t count, std::size_t goal)
+      : change(goal > count   ? BoundaryChange::only_more
+               : goal < count ? BoundaryChange::only_fewer
+                              : BoundaryChange::any),
+        missing(goal > count ? goal - count : count - goal) {}
+  /// Whether `count` went past `goal` (or off it, when it was there): interior disks a
+  /// moved boundary disk displaces are refilled, so the step can overshoot; then the
+  /// boundary must stay as it was, as the phases go one way only.
+  bool passed(std::size_t count, std::size_t goal) const {
+    return change == BoundaryChange::only_more ? count > goal : change == BoundaryChange::only_fewer ? count < goal
+                                                                                                       : count != goal;
+  }
+};
 
 template <class P>
 struct PhasePlan {
@@ -131,9 +152,12 @@ TuneResult run_phases(P& packing, const P& entry, double unit, std::size_t goal,
   TuneResult result;
   result.target = goal;
   const bool eject = result.target < packing.size();
-  // Disks still to add or remove: what each operation may change at most.
-  auto missing = [&] {
-    return eject ? packing.size() - result.target : result.target - packing.size();
+  // Disks still to add or remove: what each operation may change at most; 0 once the
+  // count is at or past the target (no operation may pass it, but a phase must never
+  // run on from the wrong side).
+  auto missing = [&]() -> std::size_t {
+    const std::size_t n = packing.size();
+    return eject ? (n > result.target ? n - result.target : 0) : (result.target > n ? result.target - n : 0);
   };
   auto eta = [&] { return static_cast<double>(packing.size()) / unit; };
   auto report = [&](Phase phase) {

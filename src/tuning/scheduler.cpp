@@ -79,12 +79,12 @@ TuneResult tune(Packing& packing, const PlanarDomain& domain, const Target& targ
   // kLongestTunedStep r, so no interior disk encroaches on the boundary.
   const std::size_t goal = target_count(target, packing, domain.area());
   const double eta = static_cast<double>(goal) / density_unit(packing, domain.area());
-  const BoundaryChange change = goal > packing.size()   ? BoundaryChange::only_more
-                                : goal < packing.size() ? BoundaryChange::only_fewer
-                                                        : BoundaryChange::any;
-  const std::size_t missing = goal > packing.size() ? goal - packing.size() : packing.size() - goal;
+  const detail::BoundaryBudget budget(packing.size(), goal);
+  boundary_loops(packing, domain);  // flags the boundary disks (a packing read from a file) before `entry` is kept
   return detail::as_transaction(packing, [&](const Packing& entry) {
-    tune_boundary(packing, domain, 1 / relative_radius_for(eta), rng, change, missing, kLongestTunedStep);
+    tune_boundary(packing, domain, 1 / relative_radius_for(eta), rng, budget.change, budget.missing,
+                  kLongestTunedStep);
+    if (budget.passed(packing.size(), goal)) packing = entry;
     return tune_in(packing, entry, domain.area(), target, rng, options, t0);
   });
 }

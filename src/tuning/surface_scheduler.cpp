@@ -22,10 +22,17 @@ TuneResult tune(SurfacePacking& packing, const Target& target, Rng& rng, const T
   const std::size_t goal = target_count_for_unit(target, unit);
   const auto plans = detail::plan_for<SurfacePacking>(options, goal < packing.size(),
                                                       packing.sizing().is_constant(), nullptr, true);
-  // The boundary first, at the spacing of a hexagonal packing of the target's count.
+  // The boundary and feature curves first, at the spacing of a hexagonal packing of the
+  // target's count (feature curves at 1.2 r whatever the target, which can add disks
+  // while ejecting). Where that takes the count past the target (the feature curves'
+  // 1.2 r can hold more disks than the sample laid out where a sizing varies along
+  // them), the curves stay as sampled: past it, the injection phases once ran on
+  // without end.
   const double eta = static_cast<double>(goal) / unit;
+  const detail::BoundaryBudget budget(packing.size(), goal);
   return detail::as_transaction(packing, [&](const SurfacePacking& entry) {
     respace_surface_boundary(packing, 1 / relative_radius_for(eta), rng);
+    if (budget.passed(packing.size(), goal)) packing = entry;
     if (options.after_surface_operation) options.after_surface_operation(packing);
     return detail::run_phases(packing, entry, unit, goal, plans, rng, options, options.after_surface_operation, t0);
   });

@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -11,9 +12,85 @@
 #include "disktune/resources.h"
 #include "disktune/restricted_delaunay.h"
 #include "disktune/surface_features.h"
+#include "disktune/surface_sizing.h"
 #include "disktune/surface_tuning.h"
 
 namespace disktune {
+namespace {
+
+// r everywhere, or with `thin_parts` smaller where another part of the surface faces a
+// point closer than r / 0.45 (thickness_sizing: thin walls, ledges), constant where
+// nothing is that close (so the crystal phases stay available).
+SurfaceSizing remesh_sizing(const SurfaceDomain& surface, double r, bool thin_parts) {
+  if (!thin_parts) return SurfaceSizing::constant(r);
+  SurfaceSizing thick = thickness_sizing(surface, r);
+  return thick.min_radius() < r ? thick : SurfaceSizing::constant(r);
+}
+
+bool keeps_topology(const SurfaceMeshCheck& check, const SurfaceDomain& surface) {
+  return check.manifold && check.genus == surface.genus() && check.isolated_vertices == 0 &&
+         check.boundary_loops == surface.boundary_loops().size();
+}
+
+// One try of remesh at conflict radius r (the radius for the count), or with
+// `thin_parts` at the largest radius whose thickness sizing gives about the count at
+// the area fraction asked for; none where the thin parts alone need more vertices.
+std::optional<RemeshResult> remesh_at(const std::shared_ptr<const SurfaceDomain>& surface, std::size_t vertex_count,
+                                      double r, bool thin_parts, const RemeshOptions& options) {
+  RemeshResult out;
+  out.radius = r;
+  if (thin_parts) {
+    const auto count_at = [&](double radius) {
+      return options.area_fraction * density_integral(remesh_sizing(*surface, radius, true), *surface);
+    };
+    const double n = static_cast<double>(vertex_count);
+    double lo = r, hi = 64 * r;  // bisection in log r: the count falls as r grows
+    if (count_at(hi) > n) return std::nullopt;
+    for (int step = 0; step < 8; ++step) {
+      const double mid = std::sqrt(lo * hi);
+      (count_at(mid) > n ? lo : hi) = mid;
+    }
+    out.radius = hi;
+  }
+  out.sizing = remesh_sizing(*surface, out.radius, thin_parts);
+  Rng rng(options.seed);
+  SurfacePacking packing = sample_mps(surface, out.sizing, rng);
+  // Disks fixed on features and boundaries, and the smaller disks of thin parts, can make
+  // the sample denser than asked, and then more than the count: sample again at a larger
+  // radius that gives a little less, so that the count is reached by injection (ejection
+  // is the slow way, and near the sample's own density it can stall). Thin parts keep
+  // their radii, so with them this can take more than one try.
+  for (int retry = 0; retry < 12 && packing.size() > vertex_count; ++retry) {
+    out.radius *= std::sqrt(1.03 * static_cast<double>(packing.size()) / static_cast<double>(vertex_count));
+    out.sizing = remesh_sizing(*surface, out.radius, thin_parts);
+    packing = sample_mps(surface, out.sizing, rng);
+  }
+  out.tuning = tune(packing, Target::count(vertex_count), rng, options.tune);
+  // The rest length of the springs: the hexagonal spacing of the count reached.
+  const double eta = static_cast<double>(packing.size()) / density_unit(packing);
+  const double spacing = 1 / relative_radius_for(eta);
+  const Progress progress{packing.size(), eta, Phase::relaxation};
+  bool cancelled = false;
+  relax(packing, spacing, options.relax_sweeps, rng, [&](int) {
+    cancelled = options.tune.on_progress && !options.tune.on_progress(progress);
+    return !cancelled;
+  });
+  if (cancelled) throw Cancelled("remesh: cancelled by the progress callback during relaxation");
+
+  out.mesh = restricted_delaunay(packing);
+  // Relaxation leaves about one triangle in a hundred obtuse: open those angles and mesh
+  // again, three times at most (measured at 10^4 vertices: the elephant 0.35 %, 0.20 %,
+  // 0.17 % obtuse after 1-3 passes; eight.off 0.20 %, 0.13 %, 0.07 %).
+  for (int pass = 0; pass < 3 && options.relax_sweeps > 0; ++pass) {
+    if (open_obtuse_angles(packing, out.mesh) == 0) break;
+    out.mesh = restricted_delaunay(packing);
+  }
+  out.check = check_surface_mesh(out.mesh);
+  for (const DiskId id : packing.ids()) out.radii.push_back(packing.radius(id));
+  return out;
+}
+
+}  // namespace
 
 RemeshResult remesh(std::shared_ptr<const SurfaceDomain> surface, std::size_t vertex_count,
                     const RemeshOptions& options) {
@@ -38,10 +115,9 @@ RemeshResult remesh(std::shared_ptr<const SurfaceDomain> surface, std::size_t ve
     with_features->set_features(detect_features(*with_features, detect));
     surface = std::move(with_features);
   }
-  RemeshResult out;
-  out.radius = radius_for_count(vertex_count, surface->area(), options.area_fraction);
-  const SurfaceSizing sizing = SurfaceSizing::constant(out.radius);
-  const ResourceEstimate need = estimate_resources(*surface, sizing).tuned_to(static_cast<double>(vertex_count));
+  const double r = radius_for_count(vertex_count, surface->area(), options.area_fraction);
+  const ResourceEstimate need =
+      estimate_resources(*surface, SurfaceSizing::constant(r)).tuned_to(static_cast<double>(vertex_count));
   const double limit = options.max_memory > 0 ? options.max_memory : available_memory();
   try {
     check_resources(need, limit);
@@ -58,37 +134,17 @@ RemeshResult remesh(std::shared_ptr<const SurfaceDomain> surface, std::size_t ve
                   std::floor(0.9 * static_cast<double>(vertex_count) * limit / need.bytes));
     throw InvalidInput(text, InvalidInput::Remedy::memory);
   }
-  Rng rng(options.seed);
-  SurfacePacking packing = sample_mps(surface, sizing, rng);
-  // Disks fixed on features and boundaries can make the sample denser than asked, and
-  // then more than the count: sample again at a radius that gives a little less, so that
-  // the count is reached by injection (ejection is the slow way, and near the sample's
-  // own density it can stall).
-  if (packing.size() > vertex_count) {
-    out.radius *= std::sqrt(1.03 * static_cast<double>(packing.size()) / static_cast<double>(vertex_count));
-    packing = sample_mps(surface, SurfaceSizing::constant(out.radius), rng);
+  // One radius first; where its mesh is no manifold of the input's topology (the
+  // surface is thinner than r allows somewhere), again with smaller radii there, kept
+  // when that mesh is one and still has the count.
+  RemeshResult out = *remesh_at(surface, vertex_count, r, false, options);
+  if (!keeps_topology(out.check, *surface)) {
+    std::optional<RemeshResult> graded = remesh_at(surface, vertex_count, r, true, options);
+    if (graded && !graded->sizing.is_constant() && keeps_topology(graded->check, *surface) &&
+        (graded->tuning.reached || !out.tuning.reached)) {
+      out = std::move(*graded);
+    }
   }
-  out.tuning = tune(packing, Target::count(vertex_count), rng, options.tune);
-  // The rest length of the springs: the hexagonal spacing of the count reached.
-  const double eta = static_cast<double>(packing.size()) / density_unit(packing);
-  const double spacing = 1 / relative_radius_for(eta);
-  const Progress progress{packing.size(), eta, Phase::relaxation};
-  bool cancelled = false;
-  relax(packing, spacing, options.relax_sweeps, rng, [&](int) {
-    cancelled = options.tune.on_progress && !options.tune.on_progress(progress);
-    return !cancelled;
-  });
-  if (cancelled) throw Cancelled("remesh: cancelled by the progress callback during relaxation");
-
-  out.mesh = restricted_delaunay(packing);
-  // Relaxation leaves about one triangle in a hundred obtuse: open those angles and mesh
-  // again, three times at most (measured at 10^4 vertices: the elephant 0.35 %, 0.20 %,
-  // 0.17 % obtuse after 1-3 passes; eight.off 0.20 %, 0.13 %, 0.07 %).
-  for (int pass = 0; pass < 3 && options.relax_sweeps > 0; ++pass) {
-    if (open_obtuse_angles(packing, out.mesh) == 0) break;
-    out.mesh = restricted_delaunay(packing);
-  }
-  out.check = check_surface_mesh(out.mesh);
   return out;
 }
 
