@@ -102,7 +102,10 @@ TEST(SamplingBias, SurfacesWithSharpFeaturesToo) {
 TEST(SamplingBias, PlanarSamplesAlmostNeverPutACenterOnTwoCircles) {
   const std::string dir = std::string(DISKTUNE_DATA_DIR) + "/domains/";
   for (const auto& [file, r] : std::vector<std::pair<std::string, double>>{
-           {"gear.poly", 0.02}, {"sharp_corners.poly", 0.02}, {"square_with_hole.poly", 0.01}}) {
+           {"gear.poly", 0.02},
+           {"sharp_corners.poly", 0.02},
+           {"square_with_hole.poly", 0.01},
+           {"notch_and_holes.poly", 0.01}}) {  // close holes and a 26-degree notch
     const auto domain = std::make_shared<const PlanarDomain>(read_poly(dir + file));
     for (std::uint64_t seed = 1; seed <= 3; ++seed) {
       Rng rng(seed);
