@@ -94,31 +94,32 @@ std::string topology_text(const SurfaceMeshCheck& check, const SurfaceDomain& su
 }
 
 // On stderr when the mesh is no manifold of the input's genus; `done` says what was
-// still done with it ("written", "measured"), `denser` how to ask for denser samples.
+// still done with it ("written", "measured"); `denser` how to ask for denser samples
+// (null: a smaller radius, or where the mesh is no manifold, the thickness sizing too).
 void warn_topology(const SurfaceMeshCheck& check, const SurfaceDomain& surface, const char* done,
-                   const char* denser = "use a smaller radius") {
+                   const char* denser = nullptr) {
+  const char* smaller = denser ? denser : "use a smaller radius";
   if (!check.manifold) {
     std::fprintf(stderr,
                  "disktune: warning: the restricted Delaunay mesh is not a manifold (%zu edges in "
                  "more than two triangles, %zu bow-tie vertices); it was still %s. The samples are "
                  "too sparse for the surface: %s\n",
                  check.non_manifold_edges, check.non_manifold_vertices, done,
-                 std::string(denser) == "use a smaller radius"
-                     ? "use a smaller radius, or --sizing auto:R (smaller where the surface faces itself "
-                       "closely, as thin walls and ledges do)"
-                     : denser);
+                 denser ? denser
+                        : "use a smaller radius, or --sizing auto:R (smaller where the surface faces itself "
+                          "closely, as thin walls and ledges do)");
   } else if (check.boundary_loops != surface.boundary_loops().size()) {
     std::fprintf(stderr,
                  "disktune: warning: the restricted Delaunay mesh has %zu boundary loops, the input "
                  "surface %zu: it has holes; it was still %s. The samples are too sparse for the "
                  "surface there: %s\n",
-                 check.boundary_loops, surface.boundary_loops().size(), done, denser);
+                 check.boundary_loops, surface.boundary_loops().size(), done, smaller);
   } else if (check.genus != surface.genus()) {
     std::fprintf(stderr,
                  "disktune: warning: the restricted Delaunay mesh has genus %d, the input surface "
                  "genus %d; it was still %s. The samples are too sparse to capture the surface's "
                  "topology: %s\n",
-                 check.genus, surface.genus(), done, denser);
+                 check.genus, surface.genus(), done, smaller);
   }
 }
 
