@@ -86,6 +86,10 @@ std::optional<RemeshResult> remesh_at(const std::shared_ptr<const SurfaceDomain>
     out.mesh = restricted_delaunay(packing);
   }
   out.check = check_surface_mesh(out.mesh);
+  // The check advises a sampler's user; remesh's denser samples are more vertices.
+  const std::string radius_advice = "(a smaller radius)";
+  const std::size_t advice = out.check.problems.rfind(radius_advice);
+  if (advice != std::string::npos) out.check.problems.replace(advice, radius_advice.size(), "(ask for more vertices)");
   for (const DiskId id : packing.ids()) out.radii.push_back(packing.radius(id));
   return out;
 }
