@@ -38,6 +38,7 @@
 #include "oracle/oracle.h"
 #include "oracle/planar_oracle.h"
 #include "planar_checks.h"
+#include "sweep_seeds.h"
 #include "test_util.h"
 
 namespace disktune {
@@ -47,10 +48,7 @@ using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
-bool full_sweep() {
-  const char* sweep = std::getenv("DISKTUNE_SWEEP");
-  return sweep && std::string(sweep) == "full";
-}
+using test::full_sweep;
 
 // Targets as fractions of the MPS count, both sides. The far ones may be out of reach
 // (the fixed boundary disks, no crystal phases with a sizing): then only validity counts.
@@ -68,11 +66,7 @@ std::array<double, 2> every_operation_fractions(const Packing& mps) {
 
 // Seeds 1..n of the samples; the first `every_operation_seeds()` of them also get the
 // every-operation check.
-std::vector<std::uint64_t> seeds() {
-  std::vector<std::uint64_t> out(full_sweep() ? 20 : 2);
-  for (std::size_t k = 0; k < out.size(); ++k) out[k] = k + 1;
-  return out;
-}
+std::vector<std::uint64_t> seeds() { return test::sweep_seeds(2, 20); }
 std::size_t every_operation_seeds() { return full_sweep() ? 2 : 1; }
 
 bool checked_every_operation(std::size_t seed_index, const Packing& mps, double fraction) {

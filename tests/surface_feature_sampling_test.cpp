@@ -23,6 +23,7 @@
 #include "disktune/surface_tuning.h"
 #include "oracle/mesh_topology.h"
 #include "surface_checks.h"
+#include "sweep_seeds.h"
 
 namespace disktune {
 namespace {
@@ -272,23 +273,7 @@ TEST(FeatureMeshing, FandiskAtACoarseRadiusHasNoBowTies) {
   }
 }
 
-bool full_sweep() {
-  const char* v = std::getenv("DISKTUNE_SWEEP");
-  return v && std::string(v) == "full";
-}
-
-// Seeds a surface in the full sweep: 50, or DISKTUNE_SWEEP_SEEDS (a shorter run).
-int sweep_seeds() {
-  const char* v = std::getenv("DISKTUNE_SWEEP_SEEDS");
-  return v ? std::max(1, std::atoi(v)) : 50;
-}
-
-// The first seed of the full sweep: 1, or DISKTUNE_SWEEP_FIRST_SEED (to split a long
-// sweep into runs, say seeds 1-25 and 26-50 on two cores).
-int first_sweep_seed() {
-  const char* v = std::getenv("DISKTUNE_SWEEP_FIRST_SEED");
-  return full_sweep() && v ? std::max(1, std::atoi(v)) : 1;
-}
+using test::full_sweep;
 
 // The surfaces of issue #15, item 2, at radii where a sample has 1-3 thousand disks.
 struct TopologyCase {
@@ -338,20 +323,20 @@ TEST(FeatureMeshing, ThicknessSizingMeshesCoarseSamplesWithTheInputsTopology) {
 // the input's genus and boundary loops, both counted by the oracle on the input too.
 // Four seeds a surface here, fifty in tests/invariant_sweep.sh.
 TEST(FeatureMeshing, SampleMeshesHaveTheInputsTopologyOverSeeds) {
-  const int seeds = full_sweep() ? sweep_seeds() : 4;
-  const int first = first_sweep_seed();
+  const std::vector<std::uint64_t> seeds = test::sweep_seeds(4, 50);
   for (const TopologyCase& c : kTopologyCases) {
     const auto surface = with_features(*test::surface_file(c.file));
     const oracle::TopologyReport want = input_topology(*surface);
     ASSERT_TRUE(want.manifold()) << c.file;
     int good = 0;
-    for (int seed = first; seed < first + seeds; ++seed) {
-      Rng rng(static_cast<std::uint64_t>(seed));
+    for (const std::uint64_t seed : seeds) {
+      Rng rng(seed);
       const SurfacePacking p = sample_mps(surface, SurfaceSizing::constant(c.r), rng);
       good += has_topology(p, want, std::string(c.file) + " seed " + std::to_string(seed));
     }
-    std::printf("[ features ] %s r %g, seeds %d-%d: %d of %d sample meshes have the input's topology\n", c.file, c.r,
-                first, first + seeds - 1, good, seeds);
+    std::printf("[ features ] %s r %g, seeds %llu-%llu: %d of %zu sample meshes have the input's topology\n", c.file,
+                c.r, static_cast<unsigned long long>(seeds.front()), static_cast<unsigned long long>(seeds.back()), good,
+                seeds.size());
     std::fflush(stdout);
   }
 }
@@ -362,15 +347,14 @@ TEST(FeatureMeshing, SampleMeshesHaveTheInputsTopologyOverSeeds) {
 // asked, after 18 s), so 0.6 is not always reached: the mesh of the closest packing is
 // judged then, and the count printed.
 TEST(FeatureMeshing, TunedMeshesHaveTheInputsTopologyOverSeeds) {
-  const int seeds = full_sweep() ? sweep_seeds() : 1;
-  const int first = first_sweep_seed();
+  const std::vector<std::uint64_t> seeds = test::sweep_seeds(1, 50);
   for (const TopologyCase& c : kTopologyCases) {
     const auto surface = with_features(*test::surface_file(c.file));
     const oracle::TopologyReport want = input_topology(*surface);
     for (const double factor : {full_sweep() ? 0.6 : 0.7, 1.4}) {
       int good = 0, reached = 0;
-      for (int seed = first; seed < first + seeds; ++seed) {
-        Rng rng(static_cast<std::uint64_t>(seed));
+      for (const std::uint64_t seed : seeds) {
+        Rng rng(seed);
         SurfacePacking p = sample_mps(surface, SurfaceSizing::constant(c.r), rng);
         const auto goal = static_cast<std::size_t>(std::lround(factor * static_cast<double>(p.size())));
         const std::string what = std::string(c.file) + " x" + std::to_string(factor).substr(0, 3) + " seed " +
@@ -378,9 +362,10 @@ TEST(FeatureMeshing, TunedMeshesHaveTheInputsTopologyOverSeeds) {
         reached += tune(p, Target::count(goal), rng).reached;
         good += has_topology(p, want, what);
       }
-      std::printf("[ features ] %s r %g, seeds %d-%d, tuned to %.1fx (reached %d of %d): %d of %d meshes have the "
-                  "input's topology\n",
-                  c.file, c.r, first, first + seeds - 1, factor, reached, seeds, good, seeds);
+      std::printf("[ features ] %s r %g, seeds %llu-%llu, tuned to %.1fx (reached %d of %zu): %d of %zu meshes have "
+                  "the input's topology\n",
+                  c.file, c.r, static_cast<unsigned long long>(seeds.front()),
+                  static_cast<unsigned long long>(seeds.back()), factor, reached, seeds.size(), good, seeds.size());
       std::fflush(stdout);
     }
   }
