@@ -356,8 +356,8 @@ int run_surface_remesh(const RemeshJob& job) {
     std::fprintf(stderr,
                  "disktune: note: with one radius the mesh was no manifold of the input's topology, so the "
                  "vertices were placed again with r = %.4g where the surface leaves room and smaller radii where "
-                 "parts of it face each other closer than r / 0.45, down to %.4g near (%.4g, %.4g, %.4g)\n",
-                 result.radius, radii[thinnest], at.x, at.y, at.z);
+                 "parts of it face each other closer than r / %g, down to %.4g near (%.4g, %.4g, %.4g)\n",
+                 result.radius, kFeatureShare, radii[thinnest], at.x, at.y, at.z);
   }
   write_surface_mesh(job.output, result.mesh);
   SurfaceMeshQuality q;
