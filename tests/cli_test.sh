@@ -305,7 +305,7 @@ expect features-default 0 "^sample: [0-9]+ disks \([1-9][0-9]* on feature curves
 expect features-read 0 "^report: [0-9]+ disks \([1-9][0-9]* on feature curves\), .*maximal, conflict-free; mesh: .*manifold yes, genus 0" -- "$bin" report fd.csv --domain "$fandisk" --radius 0.02
 expect features-mesh 0 "^mesh: [0-9]+ disks, .* triangles \(restricted Delaunay\), [1-9][0-9]* edges along feature curves, manifold yes, genus 0" -- "$bin" mesh fd.csv --domain "$fandisk" --radius 0.02 --output fd.obj
 grep -q "^l [0-9]* [0-9]*$" fd.obj && pass=$((pass + 1)) || { echo "FAIL feature edges as OBJ lines"; fails=$((fails + 1)); }
-expect surface-auto 0 "^sample: [0-9]+ disks \([1-9][0-9]* on feature curves\), .*sizing thickness sizing min\(0\.05, 0\.45 thickness graded at 0\.2\), smallest 0\.0141 near \(0\.442, 0\.224, -0\.0794\)" -- "$bin" sample --domain "$fandisk" --sizing auto:0.05 --output fa.csv
+expect surface-auto 0 "^sample: [0-9]+ disks \([1-9][0-9]* on feature curves\), .*sizing thickness sizing min\(0\.05, 0\.45 thickness, 0\.9 curve gap\) graded at 0\.2, smallest 0\.0141 near \(0\.442, 0\.224, -0\.0794\)" -- "$bin" sample --domain "$fandisk" --sizing auto:0.05 --output fa.csv
 expect surface-auto-report 0 "^report: .*maximal, conflict-free; mesh: .*manifold yes, genus 0" -- "$bin" report fa.csv --domain "$fandisk" --sizing auto:0.05
 expect features-none 0 "^sample: [0-9]+ disks, eta .*genus 0, closed, area" -- "$bin" sample --domain "$fandisk" --radius 0.02 --features none
 expect features-angle 0 "closed, [0-9]+ feature curves" -- "$bin" sample --domain "$fandisk" --radius 0.02 --features 30
@@ -327,8 +327,15 @@ expect remesh-off 0 "^remesh: 1500 vertices \(as asked\), .*genus 2 \(input genu
 # At 700 vertices fandisk's radius is too coarse for the gap under its ledge: seed 3's
 # one-radius mesh has edges in three triangles, so remesh meshes again with smaller radii
 # there and says so.
-expect remesh-thin 0 "^disktune: note: with one radius the mesh was no manifold of the input's topology, so the vertices were placed again with r = 0\.05[0-9]+ where .* down to 0\.0141[0-9]* near \(0\.44[0-9]*, 0\.22[0-9]*, -0\.079[0-9]*\)$" -- "$bin" remesh "$fandisk" -n 700 --seed 3 -o thin.off
+expect remesh-thin 0 "^disktune: note: with one radius the mesh was no manifold of the input's topology, so the vertices were placed with r = 0\.05[0-9]+ where .* down to 0\.0141 near \(0\.442, 0\.224, -0\.0794\)$" -- "$bin" remesh "$fandisk" -n 700 --seed 3 -o thin.off
 expect remesh-thin-manifold 0 "^remesh: 700 vertices \(as asked\), .*manifold yes, genus 0 \(input genus 0\)" -- "$bin" remesh "$fandisk" -n 700 --seed 3 -o thin.off
+# A radius larger than the gap between two creases (a unit cube with one edge chamfered
+# 0.05 x 0.05, 30-degree features) would leave one crease without disks: sample turns
+# --radius into auto:R, remesh grades its radii near them from the start.
+printf 'OFF\n10 16 0\n0 0 0\n1 0 0\n1 0.95 0\n0.95 1 0\n0 1 0\n0 0 1\n1 0 1\n1 0.95 1\n0.95 1 1\n0 1 1\n3 0 2 1\n3 0 3 2\n3 0 4 3\n3 5 6 7\n3 5 7 8\n3 5 8 9\n3 0 1 6\n3 0 6 5\n3 1 2 7\n3 1 7 6\n3 2 3 8\n3 2 8 7\n3 3 4 9\n3 3 9 8\n3 4 0 5\n3 4 5 9\n' >chamfer.off
+expect surface-close-curves 0 "note: r = 0\.1 does not fit this surface .*using --sizing auto:0\.1" -- "$bin" sample --domain chamfer.off --features 30 --radius 0.1 --output ch.csv
+expect surface-close-curves-read 0 "^report: .*maximal, conflict-free; mesh: .*manifold yes, genus 0" -- "$bin" report ch.csv --domain chamfer.off --features 30 --radius 0.1
+expect remesh-close-curves 0 "^disktune: note: one radius \(0\.08[0-9]*\) would leave a stretch of a feature curve or boundary without vertices, next to another one closer than r, so the vertices were placed with r = 0\.0[0-9]+ where .* down to 0\.0636 near \(1, 0\.95, 0\)" -- "$bin" remesh chamfer.off --features 30 -n 600 -o ch.off
 expect remesh-flat 2 "remesh: .*square_with_hole\.off is flat .*run sample, tune and mesh with --domain" -- "$bin" remesh "$data/domains/square_with_hole.off" -n 500 -o never.off
 expect remesh-few 2 "--vertices 3 is out of range: give 4 to" -- "$bin" remesh "$fandisk" -n 3 -o never.off
 expect remesh-format 2 "cannot tell the mesh format of 'never\.csv'" -- "$bin" remesh "$fandisk" -n 500 -o never.csv

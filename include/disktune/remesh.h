@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "disktune/surface_domain.h"
@@ -56,8 +57,13 @@ struct RemeshResult {
   double radius = 0;
   /// The radii the vertices were placed with: `radius` everywhere, or smaller where
   /// another part of the surface faces a point closer than radius / 0.45 (a thin wall,
-  /// a ledge: thickness_sizing), where one radius would give a mesh that is no manifold.
+  /// a ledge) or two feature curves or boundaries come that close (thickness_sizing):
+  /// where one radius would give a mesh that is no manifold, or leave a stretch of a
+  /// feature without vertices of its own (curves_fit).
   SurfaceSizing sizing;
+  /// Why the radii vary, in a sentence for the user (where, down to what); empty when
+  /// `sizing` is constant.
+  std::string grading_note;
   /// Vertex i's radius (the sizing at it), for measuring edges in units of r.
   std::vector<double> radii;
   TuneResult tuning;

@@ -63,13 +63,31 @@ SurfaceSizing curvature_sizing(const SurfaceDomain& domain, const CurvatureSizin
 /// shortest-path pass from the smallest radii outward); never raises one.
 void limit_gradation(const SurfaceDomain& domain, std::vector<double>& radii, double gradation);
 
+/// Whether one radius r everywhere keeps disks of their own on the surface's fixed
+/// curves (SurfaceDomain::fixed_curves: open boundaries and feature curves): false when
+/// a stretch of a curve longer than 3r lies closer than r to a part of the curves it
+/// does not meet (a curve sharing no corner with it, at a corner one that does not end
+/// there, or its own curve more than twice as far along it as in space): a chamfer's two
+/// creases, a crease beside a rim, two close holes. A disk on one such part covers the
+/// other, which then holds none, and the mesh cuts across that stretch. Shorter
+/// stretches, two disks' worth at the curves' spacing or less (a few noisy feature
+/// edges of a scan), are let go.
+bool curves_fit(const SurfaceDomain& domain, double r);
+
+/// The share of that gap a radius may take near such curves (thickness_sizing): below
+/// the gap, each of the two parts keeps disks of its own, and the surface between them
+/// is meshed from both (a facing thin wall needs kFeatureShare, far less).
+constexpr double kCurveGapShare = 0.9;
+
 /// Thickness sizing (`--sizing auto:RMAX[,G]` on a surface): at each vertex r =
 /// min(r_max, kFeatureShare * thickness), the thickness being the distance to the
 /// nearest other part of the surface that faces the vertex (a triangle whose normal
 /// points against the vertex's, cosine below -1/2, whose closest point lies within 60
-/// degrees of the vertex's normal line): a thin wall, or a face under a ledge. Then the
-/// gradation limit (limit_gradation). Throws InvalidInput unless r_max > 0 and
-/// 0 < gradation < 0.5, or where the surface touches itself.
+/// degrees of the vertex's normal line): a thin wall, or a face under a ledge; and at
+/// a vertex of a fixed curve also r <= kCurveGapShare times its distance to the curve
+/// parts it does not meet (as curves_fit). Then the gradation limit
+/// (limit_gradation). Throws InvalidInput unless r_max > 0 and 0 < gradation < 0.5, or
+/// where the surface touches itself.
 SurfaceSizing thickness_sizing(const SurfaceDomain& domain, double r_max, double gradation = 0.2);
 
 /// The integral of 4 / (pi r^2) over the surface: the disk count at area fraction 1

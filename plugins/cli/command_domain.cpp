@@ -81,6 +81,16 @@ CommandDomain open_surface(const DomainArgs& args) {
     }
     d.radius = args.radius;
     d.surface_sizing = std::make_shared<const SurfaceSizing>(SurfaceSizing::constant(args.radius));
+    // As on a planar domain: a radius that would leave a feature or boundary without
+    // disks of its own, next to another, becomes the largest radius of auto:.
+    if (!curves_fit(*d.surface, args.radius)) {
+      d.surface_sizing = std::make_shared<const SurfaceSizing>(thickness_sizing(*d.surface, args.radius));
+      std::fprintf(stderr,
+                   "disktune: note: r = %g does not fit this surface (two of its feature curves or boundaries "
+                   "are closer than r along more than 3r); using --sizing auto:%g, which shrinks r near them "
+                   "(docs/surfaces.md)\n",
+                   args.radius, args.radius);
+    }
   } else {
     d.surface_sizing = std::make_shared<const SurfaceSizing>(
         with_flags("--sizing", [&] { return parse_surface_sizing(args.sizing, *d.surface); }));

@@ -53,7 +53,8 @@ void add_domain_options(CLI::App* cmd, DomainArgs& domain) {
                   "(r grows with the distance to a planar domain's boundary); docs/sizing.md. On "
                   "a surface: a number, an expression in x, y and z, curvature[:RMIN,RMAX] "
                   "(smaller where the surface bends more), or auto:RMAX (smaller where the surface "
-                  "faces itself closely: thin walls, ledges)");
+                  "faces itself closely, as thin walls and ledges do, or its feature curves and "
+                  "boundaries come close)");
   cmd->add_option("--features", domain.features,
                   "On a surface: edges where the surface folds by more than ANGLE degrees (the "
                   "angle between their triangles' normals) are sharp features, chained into curves "

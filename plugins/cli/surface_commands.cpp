@@ -349,16 +349,7 @@ int run_surface_remesh(const RemeshJob& job) {
                      },
                      "", [] {});
   const double seconds = seconds_since(t0);
-  if (!result.sizing.is_constant()) {
-    const std::vector<double>& radii = result.sizing.vertex_radii();
-    const auto thinnest = static_cast<std::size_t>(std::min_element(radii.begin(), radii.end()) - radii.begin());
-    const Vec3 at = surface->vertices()[thinnest];
-    std::fprintf(stderr,
-                 "disktune: note: with one radius the mesh was no manifold of the input's topology, so the "
-                 "vertices were placed again with r = %.4g where the surface leaves room and smaller radii where "
-                 "parts of it face each other closer than r / %g, down to %.4g near (%.4g, %.4g, %.4g)\n",
-                 result.radius, kFeatureShare, radii[thinnest], at.x, at.y, at.z);
-  }
+  if (!result.grading_note.empty()) std::fprintf(stderr, "disktune: note: %s\n", result.grading_note.c_str());
   write_surface_mesh(job.output, result.mesh);
   SurfaceMeshQuality q;
   if (!result.mesh.triangles.empty()) {

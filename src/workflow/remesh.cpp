@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "disktune/remesh.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <optional>
@@ -14,6 +15,7 @@
 #include "disktune/surface_features.h"
 #include "disktune/surface_sizing.h"
 #include "disktune/surface_tuning.h"
+#include "../io/number_text.h"
 
 namespace disktune {
 namespace {
@@ -94,6 +96,19 @@ std::optional<RemeshResult> remesh_at(const std::shared_ptr<const SurfaceDomain>
   return out;
 }
 
+// "<why>, so the vertices were placed with r = R where the surface leaves room and
+// smaller radii near ..., down to r_min near (x, y, z)".
+std::string grading_note(const RemeshResult& result, const SurfaceDomain& surface, const std::string& why) {
+  const std::vector<double>& radii = result.sizing.vertex_radii();
+  const auto thinnest = static_cast<std::size_t>(std::min_element(radii.begin(), radii.end()) - radii.begin());
+  const Vec3 at = surface.vertices()[thinnest];
+  return why + ", so the vertices were placed with r = " + detail::short_text(result.radius) +
+         " where the surface leaves room and smaller radii where parts of it face each other closer than r / " +
+         detail::short_text(kFeatureShare) + " or feature curves and boundaries come closer than r / " +
+         detail::short_text(kCurveGapShare) + ", down to " + detail::short_text(radii[thinnest]) + " near (" +
+         detail::short_text(at.x) + ", " + detail::short_text(at.y) + ", " + detail::short_text(at.z) + ")";
+}
+
 }  // namespace
 
 RemeshResult remesh(std::shared_ptr<const SurfaceDomain> surface, std::size_t vertex_count,
@@ -138,15 +153,27 @@ RemeshResult remesh(std::shared_ptr<const SurfaceDomain> surface, std::size_t ve
                   std::floor(0.9 * static_cast<double>(vertex_count) * limit / need.bytes));
     throw InvalidInput(text, InvalidInput::Remedy::memory);
   }
-  // One radius first; where its mesh is no manifold of the input's topology (the
-  // surface is thinner than r allows somewhere), again with smaller radii there, kept
-  // when that mesh is one and still has the count.
+  // Where r would leave a feature or boundary without disks of its own (curves_fit),
+  // smaller radii near it at once. Else one radius first; where its mesh is no manifold
+  // of the input's topology (the surface is thinner than r allows somewhere), again with
+  // smaller radii there, kept when that mesh is one and still has the count.
+  if (!curves_fit(*surface, r)) {
+    if (std::optional<RemeshResult> graded = remesh_at(surface, vertex_count, r, true, options)) {
+      if (!graded->sizing.is_constant()) {
+        graded->grading_note = grading_note(*graded, *surface,
+                                            "one radius (" + detail::short_text(r) + ") would leave a stretch of a feature "
+                                            "curve or boundary without vertices, next to another one closer than r");
+      }
+      return *graded;
+    }
+  }
   RemeshResult out = *remesh_at(surface, vertex_count, r, false, options);
   if (!keeps_topology(out.check, *surface)) {
     std::optional<RemeshResult> graded = remesh_at(surface, vertex_count, r, true, options);
     if (graded && !graded->sizing.is_constant() && keeps_topology(graded->check, *surface) &&
         (graded->tuning.reached || !out.tuning.reached)) {
       out = std::move(*graded);
+      out.grading_note = grading_note(out, *surface, "with one radius the mesh was no manifold of the input's topology");
     }
   }
   return out;
