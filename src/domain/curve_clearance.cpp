@@ -17,9 +17,11 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <cstdint>
+#include <limits>
 #include <vector>
 
-#include "box_cells.h"
+#include "box_tree.h"
 #include "disktune/surface_sizing.h"
 #include "disktune/vec3.h"
 
@@ -51,7 +53,7 @@ std::vector<double> curve_clearance(const SurfaceDomain& domain, double reach) {
   std::vector<std::vector<CurvePlace>> places(points.size());
   std::vector<std::array<std::size_t, 2>> ends(curves.size());  // an open curve's corners
   std::vector<std::array<std::size_t, 2>> edges;                 // {curve, index of the edge}
-  std::vector<BoxCells::Box> boxes;
+  std::vector<BoxTree::Box> boxes;
   for (std::size_t c = 0; c < curves.size(); ++c) {
     const auto& v = curves[c].vertices;
     arc[c].push_back(0);
@@ -59,7 +61,7 @@ std::vector<double> curve_clearance(const SurfaceDomain& domain, double reach) {
       const Vec3 a = points[v[m]], b = points[v[(m + 1) % v.size()]];
       arc[c].push_back(arc[c].back() + norm(b - a));
       edges.push_back({c, m});
-      boxes.push_back(BoxCells::box_of(std::array<Vec3, 2>{a, b}));
+      boxes.push_back(BoxTree::box_of(std::array<Vec3, 2>{a, b}));
     }
     for (std::size_t k = 0; k < v.size(); ++k) places[v[k]].push_back({c, k});
     ends[c] = {v.front(), v.back()};
@@ -70,7 +72,7 @@ std::vector<double> curve_clearance(const SurfaceDomain& domain, double reach) {
   const auto share_corner = [&](std::size_t c, std::size_t o) {
     return !curves[c].closed && !curves[o].closed && (is_end(o, ends[c][0]) || is_end(o, ends[c][1]));
   };
-  const BoxCells cells(boxes, reach);
+  const BoxTree tree(boxes);
   for (std::size_t vertex = 0; vertex < points.size(); ++vertex) {
     const auto& here = places[vertex];
     if (here.empty()) continue;
@@ -85,11 +87,11 @@ std::vector<double> curve_clearance(const SurfaceDomain& domain, double reach) {
       return !on_c && !corner && share_corner(here[0].curve, c);
     };
     const Vec3 p = points[vertex];
-    cells.around(p, [&](std::uint32_t e) {
+    clearance[vertex] = tree.nearest(p, reach, [&](std::uint32_t e) {
       const auto [c, m] = edges[e];
       const auto& v = curves[c].vertices;
       const double d = distance_to_segment(p, points[v[m]], points[v[(m + 1) % v.size()]]);
-      if (d < clearance[vertex] && !meets(c, m, d)) clearance[vertex] = d;
+      return meets(c, m, d) ? std::numeric_limits<double>::infinity() : d;
     });
   }
   return clearance;

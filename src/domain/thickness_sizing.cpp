@@ -16,6 +16,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -23,12 +24,14 @@
 #include "disktune/sizing.h"
 #include "disktune/surface_geometry.h"
 #include "disktune/surface_sizing.h"
-#include "box_cells.h"
+#include "box_tree.h"
 #include "curve_clearance.h"
 #include "surface_sizing_util.h"
 
 namespace disktune {
 namespace {
+
+constexpr double kNone = std::numeric_limits<double>::infinity();  // a triangle that does not count
 
 // Unit triangle normals (zero for a degenerate triangle).
 std::vector<Vec3> triangle_normals(const SurfaceDomain& d) {
@@ -65,10 +68,10 @@ SurfaceSizing thickness_sizing(const SurfaceDomain& domain, double r_max, double
                        " is not valid: it needs r_max > 0 and 0 < gradation < 0.5 (e.g. auto:0.02 or auto:0.02,0.3)");
   }
   const double reach = r_max / kFeatureShare;  // no part farther than this lowers r
-  std::vector<detail::BoxCells::Box> boxes;
+  std::vector<detail::BoxTree::Box> boxes;
   for (const auto& tri : domain.triangles())
-    boxes.push_back(detail::BoxCells::box_of(std::array<Vec3, 3>{domain.vertices()[tri[0]], domain.vertices()[tri[1]], domain.vertices()[tri[2]]}));
-  const detail::BoxCells cells(boxes, reach);
+    boxes.push_back(detail::BoxTree::box_of(std::array<Vec3, 3>{domain.vertices()[tri[0]], domain.vertices()[tri[1]], domain.vertices()[tri[2]]}));
+  const detail::BoxTree tree(boxes);
   const std::vector<Vec3> normal = vertex_normals(domain), facing = triangle_normals(domain);
   const auto& triangles = domain.triangles();
   const auto& points = domain.vertices();
@@ -77,13 +80,12 @@ SurfaceSizing thickness_sizing(const SurfaceDomain& domain, double r_max, double
   std::size_t thinnest = 0;
   for (std::size_t v = 0; v < radii.size(); ++v) {
     const Vec3 p = points[v];
-    double thickness = reach;
-    cells.around(p, [&](std::uint32_t t) {
+    const double thickness = tree.nearest(p, reach, [&](std::uint32_t t) {
       const auto& tri = triangles[t];
-      if (tri[0] == v || tri[1] == v || tri[2] == v || !(dot(facing[t], normal[v]) < -0.5)) return;
+      if (tri[0] == v || tri[1] == v || tri[2] == v || !(dot(facing[t], normal[v]) < -0.5)) return kNone;
       const Vec3 q = closest_point_on_triangle(p, points[tri[0]], points[tri[1]], points[tri[2]]);
       const double d = norm(q - p);
-      if (d < thickness && std::abs(dot(q - p, normal[v])) >= 0.5 * d) thickness = d;
+      return std::abs(dot(q - p, normal[v])) >= 0.5 * d ? d : kNone;
     });
     radii[v] = std::min({r_max, kFeatureShare * thickness, kCurveGapShare * clearance[v]});
     if (radii[v] < radii[thinnest]) thinnest = v;
