@@ -13,7 +13,9 @@
 
 #include "disktune/errors.h"
 #include "disktune/random.h"
+#include "disktune/sizing.h"
 #include "disktune/surface_domain.h"
+#include "disktune/surface_geometry.h"
 #include "surface_checks.h"
 #include "test_util.h"
 
@@ -333,6 +335,43 @@ TEST(SurfaceSizing, ThicknessIsTheDistanceToTheFacingSide) {
   for (const double r : wide.vertex_radii()) EXPECT_EQ(r, 0.1);
   EXPECT_THROW(thickness_sizing(*cube, 0), InvalidInput);
   EXPECT_THROW(thickness_sizing(*cube, 0.1, 0.5), InvalidInput);
+}
+
+// The thickness sizing's search (a bounding-box tree, branch and bound) against all
+// triangles for every vertex, on real surfaces without features (so only the thickness
+// counts) and a reach that spans them (r_max 0.3: 0.67): the same radii to the bit.
+TEST(SurfaceSizing, ThicknessSearchMatchesAllTrianglesByBruteForce) {
+  for (const char* file : {"elephant.off", "eight.off", "fandisk.off"}) {
+    const auto d = test::surface_file(file);
+    const auto& p = d->vertices();
+    std::vector<Vec3> normal(p.size(), Vec3{0, 0, 0}), facing;
+    for (const auto& t : d->triangles()) {
+      const Vec3 n = cross(p[t[1]] - p[t[0]], p[t[2]] - p[t[0]]);
+      for (const auto v : t) normal[v] = normal[v] + n;
+      facing.push_back(n * (1 / norm(n)));
+    }
+    const double r_max = 0.3, reach = r_max / kFeatureShare;
+    std::vector<double> radii(p.size());
+    for (std::size_t v = 0; v < p.size(); ++v) {
+      const Vec3 n = normal[v] * (1 / norm(normal[v]));
+      double thickness = reach;
+      for (std::size_t t = 0; t < d->triangles().size(); ++t) {
+        const auto& tri = d->triangles()[t];
+        if (tri[0] == v || tri[1] == v || tri[2] == v || !(dot(facing[t], n) < -0.5)) continue;
+        const Vec3 q = closest_point_on_triangle(p[v], p[tri[0]], p[tri[1]], p[tri[2]]);
+        const double dist = norm(q - p[v]);
+        if (std::abs(dot(q - p[v], n)) >= 0.5 * dist) thickness = std::min(thickness, dist);
+      }
+      radii[v] = std::min(r_max, kFeatureShare * thickness);
+    }
+    limit_gradation(*d, radii, 0.2);
+    const SurfaceSizing sizing = thickness_sizing(*d, r_max);
+    ASSERT_EQ(sizing.vertex_radii().size(), radii.size()) << file;
+    std::size_t differ = 0;
+    for (std::size_t v = 0; v < radii.size(); ++v) differ += sizing.vertex_radii()[v] != radii[v];
+    EXPECT_EQ(differ, 0u) << file;
+    EXPECT_LT(sizing.min_radius(), r_max) << file;  // something was found
+  }
 }
 
 }  // namespace
