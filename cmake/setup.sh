@@ -69,7 +69,7 @@ checks() {
     'PeriodicProperty\.(OracleAfterEveryOperation|TargetsOnBothSides)'
     'ConstrainedDelaunay\.ManyPointsAndARoundHole' 'BoundaryTuning\.PlanarSteps'
     'Remesh\.(GivesExactly|WhereTheSurface)' 'PlanarTuning/InDomain\.TuneDownTo04'
-    'FeatureMeshing\.' 'FeatureSampling\.(Fandisk|Tuning)' 'BoundarySpacing\.TuningKeeps')
+    'FeatureMeshing\.' 'FeatureSampling\.(Fandisk|Tuning|EveryPatch)' 'SurfaceSizing\.ThicknessSearch' 'BoundarySpacing\.TuningKeeps')
   local slow="^($(IFS='|'; echo "${skip[*]}"))"
   ASAN_OPTIONS=halt_on_error=1:detect_leaks=1:print_stacktrace=1 \
     UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 \

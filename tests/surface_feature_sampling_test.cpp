@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <map>
 #include <set>
 #include <string>
 #include <tuple>
@@ -168,6 +169,51 @@ std::size_t missing_edges(const SurfacePacking& p, const FeatureFindings& f) {
   std::size_t missing = 0;
   for (const auto& [x, y] : f.close_pairs) missing += !edges.count(std::minmax(vertex_of[x], vertex_of[y]));
   return missing;
+}
+
+// Issue #15, item 1, "surface disks never cover across a feature": each patch the
+// features cut the surface into (brute force, expected_patches) is covered by the
+// disks whose centers lie on it (inside it, or on its curves and corners), judged by
+// the oracle on that patch's triangles alone. The uncovered witnesses over all patches.
+std::size_t uncovered_within_patches(const SurfacePacking& p, double degrees) {
+  const SurfaceDomain& d = p.domain();
+  const std::vector<std::size_t> label = test::expected_patches(d, test::expected_features(d, degrees));
+  std::map<std::size_t, std::vector<std::size_t>> patches;  // label -> triangles
+  for (std::size_t t = 0; t < label.size(); ++t) patches[label[t]].push_back(t);
+  const oracle::SurfaceMeshInput whole = test::oracle_surface(d);
+  oracle::SurfaceOptions options;
+  options.on_surface = options.conflicts = options.boundary = false;
+  std::size_t uncovered = 0;
+  for (const auto& [first, triangles] : patches) {
+    oracle::SurfaceMeshInput part{whole.vertices, {}};
+    Vec3 lo = d.vertices()[d.triangles()[first][0]], hi = lo;
+    for (const std::size_t t : triangles) {
+      part.triangles.push_back(whole.triangles[t]);
+      for (const auto v : d.triangles()[t]) {
+        const Vec3 q = d.vertices()[v];
+        lo = {std::min(lo.x, q.x), std::min(lo.y, q.y), std::min(lo.z, q.z)};
+        hi = {std::max(hi.x, q.x), std::max(hi.y, q.y), std::max(hi.z, q.z)};
+      }
+    }
+    std::vector<oracle::Point3> centers;
+    std::vector<double> radii;
+    for (const DiskId id : p.ids()) {
+      const Vec3 c = p.center(id);
+      const double tol = 1e-9 * p.radius(id);
+      if (c.x < lo.x - tol || c.y < lo.y - tol || c.z < lo.z - tol || c.x > hi.x + tol || c.y > hi.y + tol ||
+          c.z > hi.z + tol || oracle::distance_to_surface(part, {c.x, c.y, c.z}) > tol) {
+        continue;
+      }
+      centers.push_back({c.x, c.y, c.z});
+      radii.push_back(p.radius(id));
+    }
+    if (centers.empty()) {
+      ++uncovered;  // a patch without a disk of its own is not covered by its own
+      continue;
+    }
+    uncovered += oracle::check_surface(part, centers, radii, options).uncovered_count;
+  }
+  return uncovered;
 }
 
 TEST(FeatureSampling, TheBoxKeepsItsTwelveEdgesOverSeeds) {
@@ -362,6 +408,38 @@ TEST(FeatureSampling, CloseCurvesKeepDisksOfTheirOwnWithTheThicknessSizing) {
     EXPECT_EQ(f.fixed_off_curves, 0u) << "seed " << seed;
     has_topology(p, want, "chamfer auto:0.1 seed " + std::to_string(seed));
   }
+}
+
+// Issue #15, item 1: no point of a sample is covered only by disks across a feature.
+// Each patch between the features is covered by the disks on it and its curves alone
+// (the oracle on the patch's triangles): real surfaces at radii their curves fit, and
+// the chamfer with auto:0.1; with one radius 0.1 the chamfer's face beside the bare
+// crease is covered only from across it, which the check finds. (Not yet after
+// ejection: docs/surfaces.md, "Not yet".)
+TEST(FeatureSampling, EveryPatchIsCoveredByItsOwnDisksNotAcrossAFeature) {
+  for (const auto& [file, r, seeds] :
+       {std::tuple{"fandisk.off", 0.02, 2}, std::tuple{"elephant.off", 0.01, 1}, std::tuple{"joint.off", 0.03, 1}}) {
+    const auto surface = with_features(*test::surface_file(file));
+    for (int seed = 1; seed <= seeds; ++seed) {
+      Rng rng(static_cast<std::uint64_t>(seed));
+      const SurfacePacking p = sample_mps(surface, SurfaceSizing::constant(r), rng);
+      EXPECT_EQ(uncovered_within_patches(p, 60), 0u) << file << " seed " << seed;
+    }
+  }
+  const std::vector<Vec3> corners{{0, 0, 0}, {1, 0, 0}, {1, 0.95, 0}, {0.95, 1, 0}, {0, 1, 0},
+                                  {0, 0, 1}, {1, 0, 1}, {1, 0.95, 1}, {0.95, 1, 1}, {0, 1, 1}};
+  const std::vector<SurfaceDomain::Triangle> faces{{0, 2, 1}, {0, 3, 2}, {0, 4, 3}, {5, 6, 7}, {5, 7, 8}, {5, 8, 9},
+                                                   {0, 1, 6}, {0, 6, 5}, {1, 2, 7}, {1, 7, 6}, {2, 3, 8}, {2, 8, 7},
+                                                   {3, 4, 9}, {3, 9, 8}, {4, 0, 5}, {4, 5, 9}};
+  const auto chamfer = with_features(SurfaceDomain(corners, faces), 30);
+  const SurfaceSizing graded = thickness_sizing(*chamfer, 0.1);
+  std::size_t across_with_one_radius = 0;
+  for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+    Rng one_rng(seed), graded_rng(seed);
+    across_with_one_radius += uncovered_within_patches(sample_mps(chamfer, SurfaceSizing::constant(0.1), one_rng), 30);
+    EXPECT_EQ(uncovered_within_patches(sample_mps(chamfer, graded, graded_rng), 30), 0u) << "chamfer seed " << seed;
+  }
+  EXPECT_GT(across_with_one_radius, 0u);
 }
 
 // The thickness sizing (auto:R) shrinks r under fandisk's ledge and at the elephant's
