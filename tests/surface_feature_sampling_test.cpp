@@ -377,6 +377,17 @@ bool has_topology(const SurfacePacking& p, const oracle::TopologyReport& want, c
   return ok;
 }
 
+// A unit cube with the edge x = y = 1 cut off 0.05 x 0.05, in 16 triangles, with its
+// 30-degree features: the chamfer's two creases (45-degree folds) 0.0707 apart.
+std::shared_ptr<const SurfaceDomain> chamfered_cube() {
+  const std::vector<Vec3> corners{{0, 0, 0}, {1, 0, 0}, {1, 0.95, 0}, {0.95, 1, 0}, {0, 1, 0},
+                                  {0, 0, 1}, {1, 0, 1}, {1, 0.95, 1}, {0.95, 1, 1}, {0, 1, 1}};
+  const std::vector<SurfaceDomain::Triangle> faces{{0, 2, 1}, {0, 3, 2}, {0, 4, 3}, {5, 6, 7}, {5, 7, 8}, {5, 8, 9},
+                                                   {0, 1, 6}, {0, 6, 5}, {1, 2, 7}, {1, 7, 6}, {2, 3, 8}, {2, 8, 7},
+                                                   {3, 4, 9}, {3, 9, 8}, {4, 0, 5}, {4, 5, 9}};
+  return with_features(SurfaceDomain(corners, faces), 30);
+}
+
 // Two feature curves closer than r along a face (a chamfer's creases, 0.05 x 0.05 cut
 // off a unit cube's edge, 30-degree features): with one radius r = 0.1 the disks of one
 // crease cover the other, which holds none of its own, and the mesh cuts across it.
@@ -384,12 +395,7 @@ bool has_topology(const SurfacePacking& p, const oracle::TopologyReport& want, c
 // keeps r below the gap there: every curve edge is covered by the disks on its own
 // curve (interval coverage above), the packing passes the oracle, the mesh is a sphere.
 TEST(FeatureSampling, CloseCurvesKeepDisksOfTheirOwnWithTheThicknessSizing) {
-  const std::vector<Vec3> corners{{0, 0, 0}, {1, 0, 0}, {1, 0.95, 0}, {0.95, 1, 0}, {0, 1, 0},
-                                  {0, 0, 1}, {1, 0, 1}, {1, 0.95, 1}, {0.95, 1, 1}, {0, 1, 1}};
-  const std::vector<SurfaceDomain::Triangle> faces{{0, 2, 1}, {0, 3, 2}, {0, 4, 3}, {5, 6, 7}, {5, 7, 8}, {5, 8, 9},
-                                                   {0, 1, 6}, {0, 6, 5}, {1, 2, 7}, {1, 7, 6}, {2, 3, 8}, {2, 8, 7},
-                                                   {3, 4, 9}, {3, 9, 8}, {4, 0, 5}, {4, 5, 9}};
-  const auto chamfer = with_features(SurfaceDomain(corners, faces), 30);
+  const auto chamfer = chamfered_cube();
   ASSERT_EQ(chamfer->features().curves.size(), 15u);
   const double gap = 0.05 * std::sqrt(2.0);  // from each crease to the other, and corner to corner
   EXPECT_FALSE(curves_fit(*chamfer, 1.01 * gap));
@@ -425,12 +431,7 @@ TEST(FeatureSampling, EveryPatchIsCoveredByItsOwnDisksNotAcrossAFeature) {
       EXPECT_EQ(uncovered_within_patches(p, 60), 0u) << file << " seed " << seed;
     }
   }
-  const std::vector<Vec3> corners{{0, 0, 0}, {1, 0, 0}, {1, 0.95, 0}, {0.95, 1, 0}, {0, 1, 0},
-                                  {0, 0, 1}, {1, 0, 1}, {1, 0.95, 1}, {0.95, 1, 1}, {0, 1, 1}};
-  const std::vector<SurfaceDomain::Triangle> faces{{0, 2, 1}, {0, 3, 2}, {0, 4, 3}, {5, 6, 7}, {5, 7, 8}, {5, 8, 9},
-                                                   {0, 1, 6}, {0, 6, 5}, {1, 2, 7}, {1, 7, 6}, {2, 3, 8}, {2, 8, 7},
-                                                   {3, 4, 9}, {3, 9, 8}, {4, 0, 5}, {4, 5, 9}};
-  const auto chamfer = with_features(SurfaceDomain(corners, faces), 30);
+  const auto chamfer = chamfered_cube();
   const SurfaceSizing graded = thickness_sizing(*chamfer, 0.1);
   std::size_t across_with_one_radius = 0;
   for (std::uint64_t seed = 1; seed <= 3; ++seed) {
