@@ -66,6 +66,12 @@ struct RemeshResult {
   std::string grading_note;
   /// Vertex i's radius (the sizing at it), for measuring edges in units of r.
   std::vector<double> radii;
+  /// The input triangle vertex i lies in (to carry attributes such as texture
+  /// coordinates over to the new mesh by barycentric interpolation).
+  std::vector<std::uint32_t> input_triangles;
+  /// Whether vertex i holds a feature curve or the open boundary (a fixed disk there,
+  /// which counts on the patches on both sides; surface_packing.h).
+  std::vector<bool> on_curves;
   TuneResult tuning;
 };
 

@@ -28,11 +28,9 @@ namespace disktune {
 /// Delaunay triangulation of the samples (docs/benchmarks.md).
 SurfaceMesh restricted_delaunay(const std::vector<Vec3>& samples, const SurfaceDomain& surface);
 
-/// A sample on a feature curve or an open boundary: it belongs to every patch there.
-constexpr std::uint32_t kAnyPatch = ~std::uint32_t{0};
-
 /// The same on a surface with sharp features, each sample's patch given
-/// (SurfaceDomain::triangle_patch, or kAnyPatch), and the pairs of samples consecutive
+/// (SurfaceDomain::triangle_patch, or kAnyPatch for a sample on a feature curve or an
+/// open boundary, which belongs to every patch there), and the pairs of samples consecutive
 /// along a feature curve. Near a sharp crease the dual test can keep, around a sample x
 /// beside a feature edge ab, the triangle abx and two fans from a to b, one of them
 /// across the crease (ax and bx in three triangles, ab in one; three faces of a

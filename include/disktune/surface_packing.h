@@ -4,8 +4,15 @@
 // inside that ball. Centers carry the triangle they lie in, so every point the
 // algorithms make is exactly on the surface. A 3D hash grid answers neighbour queries
 // in O(1); a second grid finds the triangles near a point.
+//
+// Where sharp features cut the surface into patches (SurfaceDomain::triangle_patch),
+// a disk covers, and conflicts with, only what lies on a patch it counts on: a free disk
+// on its triangle's patch, a fixed disk on every patch its center lies on (both sides of
+// a crease, all around a corner). So no disk covers across a feature: each patch is a
+// maximal packing of its own, held at its rim by the disks on the feature curves.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <unordered_map>
@@ -16,9 +23,15 @@
 #include "disktune/surface_domain.h"
 #include "disktune/surface_geometry.h"
 #include "disktune/surface_sizing.h"
+#include "disktune/tolerance.h"
 #include "disktune/vec3.h"
 
 namespace disktune {
+
+/// A set of patches a disk or a point counts on, named by a number (see
+/// SurfacePacking::patches): kAnyPatch is every patch.
+using PatchSet = std::uint32_t;
+constexpr PatchSet kAnyPatch = ~PatchSet{0};
 
 /// A point on the surface: its position and the triangle it lies in.
 struct SurfacePoint {
@@ -71,6 +84,18 @@ class SurfaceIndex {
   /// k + 1; domain().fixed_curves()), with a triangle holding that edge.
   SurfacePoint on_curve(std::size_t c, std::size_t k, double s) const;
 
+  /// The patch of triangle t (0 on a surface without features), which its points lie on.
+  PatchSet patch_of_triangle(std::size_t t) const { return by_patch_ ? domain_->triangle_patch()[t] : 0; }
+  /// The patches point q lies on: its triangle's, and within `tol` of a feature edge or
+  /// vertex of that triangle, every patch there.
+  PatchSet patches_at(const SurfacePoint& q, double tol) const;
+  /// True when the two sets have a patch in common.
+  bool share_patch(PatchSet a, PatchSet b) const {
+    if (a == b || a == kAnyPatch || b == kAnyPatch) return true;
+    if (a < patch_count_ && b < patch_count_) return false;
+    return shared_by_sets(a, b);
+  }
+
  private:
   std::shared_ptr<const SurfaceDomain> domain_;
   std::vector<TrianglePlane> planes_;
@@ -82,6 +107,16 @@ class SurfaceIndex {
   std::vector<double> cumulative_area_;
   std::vector<std::vector<std::uint32_t>> curve_triangle_;  // per fixed curve, per edge
   SpaceGrid grid_;
+  // Patches, where features cut the surface. Sets of two or more patches (those of a
+  // feature edge's sides and around a feature vertex) are numbered from patch_count_ on:
+  // patch_sets_[set - patch_count_], sorted. Per triangle touching a feature, the set of
+  // each of its vertices and edges (the triangle's own patch where none is special).
+  bool by_patch_ = false;
+  PatchSet patch_count_ = 1;
+  std::vector<std::vector<std::uint32_t>> patch_sets_;
+  std::unordered_map<std::uint32_t, std::array<PatchSet, 6>> near_feature_;  // vertices 0-2, edges 3-5
+  bool shared_by_sets(PatchSet a, PatchSet b) const;
+  PatchSet set_of(std::vector<std::uint32_t> patches);
 };
 
 class SurfacePacking {
@@ -101,12 +136,19 @@ class SurfacePacking {
   /// Moves a disk; its radius becomes radius_at(q).
   void move(DiskId id, const SurfacePoint& q);
 
+  /// The patches disk `id` counts on, and those a free disk at q would (its triangle's).
+  PatchSet patches(DiskId id) const { return patches_[id]; }
+  PatchSet patches_of(const SurfacePoint& q) const { return index_->patch_of_triangle(q.triangle); }
+  /// True when the two sets have a patch in common.
+  bool share_patch(PatchSet a, PatchSet b) const { return index_->share_patch(a, b); }
+
   bool alive(DiskId id) const { return id < radius_.size() && radius_[id] > 0; }
   const SurfacePoint& point(DiskId id) const { return point_[id]; }
   Vec3 center(DiskId id) const { return point_[id].p; }
   double radius(DiskId id) const { return radius_[id]; }
   std::uint8_t flags(DiskId id) const { return flags_[id]; }
-  void set_flags(DiskId id, std::uint8_t f) { flags_[id] = f; }
+  /// Sets the flags; a disk made fixed or free counts on its patches anew.
+  void set_flags(DiskId id, std::uint8_t f);
   std::size_t size() const { return live_; }
   bool empty() const { return live_ == 0; }
   DiskId id_bound() const { return static_cast<DiskId>(radius_.size()); }
@@ -122,10 +164,18 @@ class SurfacePacking {
     return grid_.any_in_box(q, R, [&](std::uint32_t id) { return squared_norm(point_[id].p - q) <= R2 && pred(DiskId{id}); });
   }
   /// True when q lies strictly inside a disk other than `ignore1` and `ignore2` (beyond
-  /// the tolerance): a center there would be a conflict.
-  bool conflicts(Vec3 q, DiskId ignore1 = kNoDisk, DiskId ignore2 = kNoDisk) const;
-  /// True when q lies in a closed disk other than `ignore1` and `ignore2`.
-  bool covered(Vec3 q, DiskId ignore1 = kNoDisk, DiskId ignore2 = kNoDisk) const;
+  /// the tolerance) that shares a patch with q: a free center there would be a conflict.
+  bool conflicts(const SurfacePoint& q, DiskId ignore1 = kNoDisk, DiskId ignore2 = kNoDisk) const {
+    return conflicts(q.p, patches_of(q), ignore1, ignore2);
+  }
+  /// The same for a point counting on the patches `on` (kAnyPatch: every disk counts).
+  bool conflicts(Vec3 q, PatchSet on, DiskId ignore1 = kNoDisk, DiskId ignore2 = kNoDisk) const;
+  /// True when q lies in a closed disk other than `ignore1` and `ignore2` that shares a
+  /// patch with q.
+  bool covered(const SurfacePoint& q, DiskId ignore1 = kNoDisk, DiskId ignore2 = kNoDisk) const {
+    return covered(q.p, patches_of(q), ignore1, ignore2);
+  }
+  bool covered(Vec3 q, PatchSet on, DiskId ignore1 = kNoDisk, DiskId ignore2 = kNoDisk) const;
 
  private:
   std::shared_ptr<const SurfaceIndex> index_;
@@ -134,8 +184,12 @@ class SurfacePacking {
   std::vector<SurfacePoint> point_;
   std::vector<double> radius_;  // 0 marks a free id
   std::vector<std::uint8_t> flags_;
+  std::vector<PatchSet> patches_;
   std::vector<DiskId> free_ids_;
   std::size_t live_ = 0;
+  PatchSet patches_for(const SurfacePoint& q, std::uint8_t flags) const {
+    return flags & kFixed ? index_->patches_at(q, kRelTol * max_radius()) : patches_of(q);
+  }
 };
 
 // ---- templates ----

@@ -82,6 +82,74 @@ SurfaceIndex::SurfaceIndex(std::shared_ptr<const SurfaceDomain> domain, double c
     for (std::size_t k = 0; k < curve.edge_count(); ++k)
       curve_triangle_.back().push_back(by_edge.at(edge_key(v[k], v[(k + 1) % v.size()])));
   }
+  // Patches: the sets of a feature edge's two sides and of the triangles around each
+  // vertex of a feature edge, for each triangle touching one.
+  const auto& features = domain_->features().edges;
+  if (features.empty()) return;
+  by_patch_ = true;
+  patch_count_ = static_cast<PatchSet>(domain_->patch_count());
+  const auto& patch = domain_->triangle_patch();
+  std::unordered_map<std::size_t, std::vector<std::uint32_t>> around;  // feature vertex -> patches
+  for (const MeshEdge& e : features) around[e[0]], around[e[1]];
+  for (std::size_t t = 0; t < tris.size(); ++t)
+    for (const std::size_t v : tris[t])
+      if (const auto it = around.find(v); it != around.end()) it->second.push_back(patch[t]);
+  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> sides;  // feature edge -> patches
+  for (const MeshEdge& e : features) sides[edge_key(e[0], e[1])];
+  for (std::size_t t = 0; t < tris.size(); ++t)
+    for (int k = 0; k < 3; ++k)
+      if (const auto it = sides.find(edge_key(tris[t][k], tris[t][(k + 1) % 3])); it != sides.end())
+        it->second.push_back(patch[t]);
+  for (std::size_t t = 0; t < tris.size(); ++t) {
+    std::array<PatchSet, 6> sets;
+    bool special = false;
+    for (int k = 0; k < 3; ++k) {
+      const auto v = around.find(tris[t][k]);
+      sets[k] = v == around.end() ? patch[t] : set_of(v->second);
+      const auto e = sides.find(edge_key(tris[t][k], tris[t][(k + 1) % 3]));
+      sets[3 + k] = e == sides.end() ? patch[t] : set_of(e->second);
+      special = special || v != around.end();
+    }
+    if (special) near_feature_[static_cast<std::uint32_t>(t)] = sets;
+  }
+}
+
+PatchSet SurfaceIndex::set_of(std::vector<std::uint32_t> patches) {
+  std::sort(patches.begin(), patches.end());
+  patches.erase(std::unique(patches.begin(), patches.end()), patches.end());
+  if (patches.size() == 1) return patches.front();
+  const auto known = std::find(patch_sets_.begin(), patch_sets_.end(), patches);
+  if (known != patch_sets_.end()) return patch_count_ + static_cast<PatchSet>(known - patch_sets_.begin());
+  patch_sets_.push_back(std::move(patches));
+  return patch_count_ + static_cast<PatchSet>(patch_sets_.size() - 1);
+}
+
+PatchSet SurfaceIndex::patches_at(const SurfacePoint& q, double tol) const {
+  if (!by_patch_) return 0;
+  const auto it = near_feature_.find(q.triangle);
+  if (it == near_feature_.end()) return domain_->triangle_patch()[q.triangle];
+  const auto& tri = domain_->triangles()[q.triangle];
+  const auto& v = domain_->vertices();
+  for (int k = 0; k < 3; ++k)  // a vertex first: it holds the sets of both its edges
+    if (squared_norm(q.p - v[tri[k]]) <= tol * tol) return it->second[k];
+  for (int k = 0; k < 3; ++k) {
+    const Vec3 a = v[tri[k]], e = v[tri[(k + 1) % 3]] - a;
+    const double s = std::clamp(dot(q.p - a, e) / dot(e, e), 0.0, 1.0);
+    if (squared_norm(q.p - (a + e * s)) <= tol * tol) return it->second[3 + k];
+  }
+  return domain_->triangle_patch()[q.triangle];
+}
+
+bool SurfaceIndex::shared_by_sets(PatchSet a, PatchSet b) const {
+  if (a > b) std::swap(a, b);  // b is a set of two or more
+  const auto& sb = patch_sets_[b - patch_count_];
+  if (a < patch_count_) return std::binary_search(sb.begin(), sb.end(), a);
+  const auto& sa = patch_sets_[a - patch_count_];
+  for (std::size_t i = 0, j = 0; i < sa.size() && j < sb.size();) {
+    if (sa[i] == sb[j]) return true;
+    sa[i] < sb[j] ? ++i : ++j;
+  }
+  return false;
 }
 
 SurfacePoint SurfaceIndex::on_curve(std::size_t c, std::size_t k, double s) const {
@@ -166,9 +234,17 @@ DiskId SurfacePacking::insert(const SurfacePoint& q, std::uint8_t flags) {
   point_[id] = q;
   radius_[id] = radius_at(q);
   flags_[id] = flags;
+  if (patches_.size() <= id) patches_.resize(id + 1);
+  patches_[id] = patches_for(q, flags);
   grid_.insert(id, q.p);
   ++live_;
   return id;
+}
+
+void SurfacePacking::set_flags(DiskId id, std::uint8_t f) {
+  const bool refix = (f ^ flags_[id]) & kFixed;
+  flags_[id] = f;
+  if (refix) patches_[id] = patches_for(point_[id], f);
 }
 
 void SurfacePacking::remove(DiskId id) {
@@ -183,6 +259,7 @@ void SurfacePacking::move(DiskId id, const SurfacePoint& q) {
   grid_.remove(id, point_[id].p);
   point_[id] = q;
   radius_[id] = radius_at(q);
+  patches_[id] = patches_for(q, flags_[id]);
   grid_.insert(id, q.p);
 }
 
@@ -194,15 +271,17 @@ std::vector<DiskId> SurfacePacking::ids() const {
   return out;
 }
 
-bool SurfacePacking::conflicts(Vec3 q, DiskId ignore1, DiskId ignore2) const {
+bool SurfacePacking::conflicts(Vec3 q, PatchSet on, DiskId ignore1, DiskId ignore2) const {
   return any_near(q, max_radius(), [&](DiskId j) {
-    return j != ignore1 && j != ignore2 && is_conflict(squared_norm(point_[j].p - q), radius_[j]);
+    return j != ignore1 && j != ignore2 && is_conflict(squared_norm(point_[j].p - q), radius_[j]) &&
+           share_patch(patches_[j], on);
   });
 }
 
-bool SurfacePacking::covered(Vec3 q, DiskId ignore1, DiskId ignore2) const {
+bool SurfacePacking::covered(Vec3 q, PatchSet on, DiskId ignore1, DiskId ignore2) const {
   return any_near(q, max_radius() * (1 + kRelTol), [&](DiskId j) {
-    return j != ignore1 && j != ignore2 && is_covered(squared_norm(point_[j].p - q), radius_[j]);
+    return j != ignore1 && j != ignore2 && is_covered(squared_norm(point_[j].p - q), radius_[j]) &&
+           share_patch(patches_[j], on);
   });
 }
 

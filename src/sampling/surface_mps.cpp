@@ -66,7 +66,7 @@ void sample_corners(SurfacePacking& packing) {
   for (std::size_t t = 0; t < d.triangles().size(); ++t)
     for (const std::size_t v : d.triangles()[t]) triangle_at[v] = static_cast<std::uint32_t>(t);
   for (const std::size_t v : d.corners())
-    if (!packing.covered(d.vertices()[v])) packing.insert({d.vertices()[v], triangle_at[v]}, kFixed);
+    if (!packing.covered(d.vertices()[v], kAnyPatch)) packing.insert({d.vertices()[v], triangle_at[v]}, kFixed);
 }
 
 // Each fixed curve's disks laid out evenly (curve_layout.h): between its corner disks,
@@ -84,7 +84,7 @@ void lay_out_curves(SurfacePacking& packing, Rng& rng) {
       return packing.index().on_curve(c, e, std::clamp(u - static_cast<double>(e), 0.0, 1.0));
     };
     const auto radius = [&](const SurfacePoint& q) { return packing.radius_at(q); };
-    const auto place = [&](const SurfacePoint& q) { return packing.covered(q.p) ? kNoDisk : packing.insert(q, kFixed); };
+    const auto place = [&](const SurfacePoint& q) { return packing.covered(q.p, kAnyPatch) ? kNoDisk : packing.insert(q, kFixed); };
     const auto remove = [&](DiskId id) { packing.remove(id); };
     detail::lay_out_evenly(0, static_cast<double>(edges), curve.closed, false, curve.closed ? uniform01(rng) : 0,
                            8 * edges, at, radius, place, remove);
@@ -231,10 +231,14 @@ class Cells {
   std::vector<double> area_, longest_;
 };
 
-// True when one disk holds all three corners of the cell, so all of it (a ball is convex).
-bool covered_by_one(const SurfacePacking& packing, const std::array<Vec3, 3>& p) {
+// True when one disk of the cell's patch holds all three corners of the cell, so all of
+// it (a ball is convex).
+bool covered_by_one(const SurfacePacking& packing, const Cells& cells, const Cell& cell) {
+  const std::array<Vec3, 3> p = cells.corners(cell);
   const Vec3 middle = (p[0] + p[1] + p[2]) * (1.0 / 3);
+  const PatchSet patch = packing.index().patch_of_triangle(cell.triangle);
   return packing.any_near(middle, packing.max_radius(), [&](DiskId id) {
+    if (!packing.share_patch(packing.patches(id), patch)) return false;
     const Vec3 c = packing.center(id);
     const double r2 = packing.radius(id) * packing.radius(id);
     return squared_norm(p[0] - c) <= r2 && squared_norm(p[1] - c) <= r2 && squared_norm(p[2] - c) <= r2;
@@ -252,7 +256,7 @@ void uncovered_cells(const SurfacePacking& packing, const Cells& cells, double s
     while (!stack.empty()) {
       const Cell c = stack.back();
       stack.pop_back();
-      if (covered_by_one(packing, cells.corners(c))) continue;
+      if (covered_by_one(packing, cells, c)) continue;
       const bool thin_sliver = cells.longest(c) > 64 * side && 2 * cells.area(c) <= cells.longest(c) * side;
       if (cells.longest(c) <= side || thin_sliver || c.level == kDeepestLevel) {
         out.push_back(c);
@@ -279,17 +283,17 @@ void dart_level(SurfacePacking& packing, const Cells& cells, double side, std::v
         std::upper_bound(cumulative.begin(), cumulative.end(), uniform01(rng) * total) - cumulative.begin(),
         active.size() - 1);
     const SurfacePoint q = cells.dart(active[at], rng);
-    if (!packing.covered(q.p)) packing.insert(q);
+    if (!packing.covered(q)) packing.insert(q);
   }
   std::vector<Cell> next;
   for (const Cell& c : active) {
-    if (covered_by_one(packing, cells.corners(c))) continue;
+    if (covered_by_one(packing, cells, c)) continue;
     if (c.level == kDeepestLevel || cells.longest(c) > side) {
       parked.push_back(c);
       continue;
     }
     for (const Cell& k : Cells::children(c))
-      if (!covered_by_one(packing, cells.corners(k))) next.push_back(k);
+      if (!covered_by_one(packing, cells, k)) next.push_back(k);
   }
   active.swap(next);
 }
@@ -308,7 +312,7 @@ SurfacePoint point_in_void(const SurfacePacking& packing, const Cells& cells, co
                            Rng& rng) {
   for (int k = 0; k < 16; ++k) {
     const SurfacePoint q = cells.dart(c, rng);
-    if (!packing.covered(q.p)) return q;
+    if (!packing.covered(q)) return q;
   }
   std::vector<SurfaceVoidPoint> found;
   if (c.level < kDeepestLevel && cells.longest(c) > 1e-6 * smallest) {
@@ -333,7 +337,7 @@ SurfacePoint point_near(const SurfacePacking& packing, const SurfaceVoidPoint& v
       const Vec2 z = x + Vec2{(2 * uniform01(rng) - 1) * half, (2 * uniform01(rng) - 1) * half};
       if (!plane.contains(z, 0)) continue;
       const Vec3 p = plane.to_space(z);
-      if (!packing.covered(p)) return {p, v.at.triangle};
+      if (!packing.covered({p, v.at.triangle})) return {p, v.at.triangle};
     }
   }
   return v.at;
@@ -350,9 +354,9 @@ void fill_sliver(SurfacePacking& packing, const Cells& cells, const Cell& c, Rng
   while (!work.empty()) {
     const SurfaceVoidPoint v = work.back();
     work.pop_back();
-    if (packing.conflicts(v.at.p)) continue;  // covered since
+    if (packing.conflicts(v.at)) continue;  // covered since
     const SurfacePoint q = point_near(packing, v, rng);
-    if (packing.conflicts(q.p)) continue;
+    if (packing.conflicts(q)) continue;
     const DiskId id = packing.insert(q);
     const std::size_t first = work.size();
     void_points_near(packing, q.p, packing.radius(id) * (1 + 1e-6), {}, work);
@@ -374,7 +378,7 @@ SurfacePacking sample_mps(std::shared_ptr<const SurfaceDomain> domain, const Sur
   for (std::size_t k = 0; k < darts; ++k) {
     const double u1 = uniform01(rng), u2 = uniform01(rng), u3 = uniform01(rng);
     const SurfacePoint q = packing.index().point_by_area(u1, u2, u3);
-    if (!packing.covered(q.p)) packing.insert(q);
+    if (!packing.covered(q)) packing.insert(q);
   }
   const Cells cells(packing.domain());
   const double smallest = sizing.min_radius();
@@ -394,7 +398,7 @@ SurfacePacking sample_mps(std::shared_ptr<const SurfaceDomain> domain, const Sur
       fill_sliver(packing, cells, c, rng);
     } else if (has_void(packing, cells, c, found)) {
       const SurfacePoint q = point_in_void(packing, cells, c, smallest, rng);
-      if (!packing.conflicts(q.p)) packing.insert(q);
+      if (!packing.conflicts(q)) packing.insert(q);
     }
   }
   detail::check_sample(packing);

@@ -75,7 +75,7 @@ class Crystal {
       if (mobile(n.id) && is_covered(n.d2, n.radius) && (mover.id == kNoDisk || n.d2 < mover.d2)) mover = n;
     });
     if (mover.id == kNoDisk) {
-      if (!inject_ || p_.conflicts(at)) return false;
+      if (!inject_ || p_.conflicts(a)) return false;
       freeze(log, log.insert(a, r_), at);
       return true;
     }

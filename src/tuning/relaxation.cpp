@@ -40,7 +40,7 @@ double move_toward(P& packing, DiskId p, typename detail::Space<P>::Location to)
   double part = 1;
   for (int halvings = 0; halvings < 3; ++halvings, step = step * 0.5, part *= 0.5) {
     typename S::Point x;
-    if (!S::project(packing, p, c + step, x) || packing.conflicts(S::location(x), p)) continue;
+    if (!S::project(packing, p, c + step, x) || packing.conflicts(x, p)) continue;
     if (!found) voids = S::voids_in(packing, c, S::void_reach(r), {p}), found = true;
     if (!S::covers_all(packing, x, voids)) continue;
     detail::BasicUndoLog<P> log(packing);
@@ -71,6 +71,9 @@ bool relax_disk(P& packing, DiskId p, double spacing, Steps<P>* last) {
   const double r = packing.radius(p), rest = spacing * r;
   auto force = c - c;
   S::for_each_near(packing, c, 1.5 * rest, [&](const auto& q) {
+    // Across a feature too, though disks there do not conflict: pushed apart, they do not
+    // make thin triangles at the crease (fandisk, r = 0.04, 12 sweeps: angles in [50, 70]
+    // 63 % with these forces, 60 % without).
     if (q.id == p || q.d2 <= 0) return;
     const double d = std::sqrt(q.d2);
     // A fixed disk (a boundary or a crease) only pushes: pulled toward a crease, a disk

@@ -31,8 +31,10 @@ SurfacePoint void_point_choice(const SurfacePacking& packing, const std::vector<
 bool covers_all(const SurfacePacking& packing, const SurfacePoint& c, const std::vector<SurfaceVoidPoint>& voids) {
   const double r = packing.radius_at(c);
   const double inside = packing.sizing().is_constant() ? r : r * (1 - 1e-7);
+  const PatchSet on = packing.patches_of(c);
   for (const SurfaceVoidPoint& v : voids) {
-    if (!is_covered(squared_norm(c.p - v.at.p), inside)) return false;
+    if (!is_covered(squared_norm(c.p - v.at.p), inside) || !packing.share_patch(packing.index().patch_of_triangle(v.at.triangle), on))
+      return false;
   }
   return true;
 }
@@ -85,7 +87,7 @@ std::vector<SurfacePoint> covering_positions(const SurfacePacking& packing, cons
     for (const std::uint32_t t : kept) {
       for_each_arrangement_vertex(packing.index().plane(t), balls, kRelTol * r, [&](Vec3 p, DiskId, DiskId) {
         const SurfacePoint x{p, t};
-        if (squared_norm(p - near) <= R * R && covers_all(packing, x, voids) && !packing.conflicts(p, self, passable))
+        if (squared_norm(p - near) <= R * R && covers_all(packing, x, voids) && !packing.conflicts(x, self, passable))
           out.push_back(x);
       }, toward);
     }
@@ -139,6 +141,7 @@ std::vector<DiskId> mobile_neighbors(const SurfacePacking& packing, Vec3 point, 
   std::vector<DiskId> near;
   packing.for_each_near(point, r + packing.max_radius(), [&](DiskId j) {
     if (j == self || (packing.flags(j) & (kFixed | kFrozen))) return;
+    if (self != kNoDisk && !packing.share_patch(packing.patches(j), packing.patches(self))) return;
     const double reach = r + packing.radius(j);
     if (squared_norm(packing.center(j) - point) < reach * reach) near.push_back(j);
   });

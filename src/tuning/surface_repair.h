@@ -45,7 +45,7 @@ bool covering_point(const SurfacePacking& packing, const std::vector<SurfaceVoid
                     Rng& rng, SurfacePoint& z);
 
 /// The disks that can move (not fixed, not frozen) whose disk overlaps one of radius r at `point`,
-/// except `self`, in random order.
+/// except `self` (and, given a `self`, those on no patch of its), in random order.
 std::vector<DiskId> mobile_neighbors(const SurfacePacking& packing, Vec3 point, double r, DiskId self, Rng& rng);
 
 /// Fills the voids within R of q by injecting at void_point_choice until none is left.

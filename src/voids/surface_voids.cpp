@@ -36,13 +36,13 @@ void disks_near(const SurfacePacking& packing, Vec3 q, double R, const std::vect
   });
 }
 
-// Whether the arrangement vertex p of a triangle (on the circles of disks a and b, where
-// not kNoDisk, and on the triangle's edges it lies on) is covered by the disks of
-// `near`: strictly inside one, or surrounded by those whose circles pass through it
+// Whether the arrangement vertex p of a triangle of `patch` (on the circles of disks a
+// and b, where not kNoDisk, and on the triangle's edges it lies on) is covered by the
+// disks of `near` that count on the patch: strictly inside one, or surrounded by those whose circles pass through it
 // (corner_cover.h). A crossing that merely lies on a third circle can still open a
 // wedge of void, and disks placed at void points make such crossings by construction.
-bool vertex_covered(const SurfacePacking& packing, const TrianglePlane& plane, Vec3 p, DiskId a, DiskId b,
-                    const std::vector<DiskId>& near, double tol) {
+bool vertex_covered(const SurfacePacking& packing, const TrianglePlane& plane, PatchSet patch, Vec3 p, DiskId a,
+                    DiskId b, const std::vector<DiskId>& near, double tol) {
   const Vec2 x = plane.to_plane(p);
   detail::CornerCover cover(x);
   // Toward the center of the circle a ball cuts in the plane (none for a ball that only
@@ -59,7 +59,7 @@ bool vertex_covered(const SurfacePacking& packing, const TrianglePlane& plane, V
     if (cross(e, x - c) <= tol * norm(e)) cover.through(Vec2{e.y, -e.x});
   }
   for (const DiskId j : near) {
-    if (j == a || j == b) continue;
+    if (j == a || j == b || !packing.share_patch(packing.patches(j), patch)) continue;
     const double d2 = squared_norm(packing.center(j) - p), r = packing.radius(j);
     if (is_conflict(d2, r)) return true;  // strictly inside
     if (is_covered(d2, r))
@@ -81,7 +81,9 @@ void collect(const SurfacePacking& packing, std::size_t t, Vec3 q, double R, con
   const Vec2 q2 = plane.to_plane(q);
   const double h = plane.height(q), reach2 = std::isfinite(R) ? R * R - h * h : 0;
   const double reach = std::isfinite(R) ? std::sqrt(std::max(reach2, 0.0)) + kRelTol * R : 0;
+  const PatchSet patch = index.patch_of_triangle(t);
   for (const DiskId j : near) {
+    if (!packing.share_patch(packing.patches(j), patch)) continue;  // it covers nothing here
     const Vec3 c = packing.center(j);
     const double r = packing.radius(j);
     if (squared_norm(index.closest_point(t, c) - c) > r * r * (1 + 4 * kRelTol)) continue;
@@ -95,7 +97,8 @@ void collect(const SurfacePacking& packing, std::size_t t, Vec3 q, double R, con
   const double tol = kRelTol * packing.max_radius();
   for_each_arrangement_vertex(plane, balls, tol, [&](Vec3 p, DiskId a, DiskId b) {
     if (squared_norm(p - q) > R2) return;
-    if (!vertex_covered(packing, plane, p, a, b, near, tol)) out.push_back({{p, static_cast<std::uint32_t>(t)}, a, b});
+    if (!vertex_covered(packing, plane, patch, p, a, b, near, tol))
+      out.push_back({{p, static_cast<std::uint32_t>(t)}, a, b});
   });
 }
 
@@ -111,12 +114,14 @@ void void_points_of(const SurfacePacking& packing, std::size_t t, const std::arr
   const double tol = kRelTol * packing.max_radius();
   thread_local std::vector<DiskId> near;
   thread_local std::vector<Ball> balls;
+  const PatchSet patch = packing.index().patch_of_triangle(t);
   for_each_region(plane, packing.max_radius(), [&](Vec3 q, double R) {
     disks_near(packing, q, R, ignore, near);
     // Only circles passing within R of q make vertices in the region.
     balls.clear();
     const Vec2 q2 = plane.to_plane(q);
     for (const DiskId j : near) {
+      if (!packing.share_patch(packing.patches(j), patch)) continue;
       const auto circle = plane.section(packing.center(j), packing.radius(j));
       if (circle && std::abs(distance(circle->center, q2) - circle->radius) <= R * (1 + kRelTol))
         balls.push_back({packing.center(j), packing.radius(j), j});
@@ -124,7 +129,8 @@ void void_points_of(const SurfacePacking& packing, std::size_t t, const std::arr
     const double R2 = R * R;
     for_each_arrangement_vertex(plane, balls, tol, [&](Vec3 p, DiskId a, DiskId b) {
       if (squared_norm(p - q) > R2) return;
-      if (!vertex_covered(packing, plane, p, a, b, near, tol)) out.push_back({{p, static_cast<std::uint32_t>(t)}, a, b});
+      if (!vertex_covered(packing, plane, patch, p, a, b, near, tol))
+        out.push_back({{p, static_cast<std::uint32_t>(t)}, a, b});
     });
   });
 }
@@ -210,12 +216,14 @@ std::vector<CurveGap> uncovered_curves(const SurfacePacking& packing, bool fixed
 namespace {
 
 // A disk that, with disk i, covers each other's centers, or kNoDisk. Pairwise the
-// prior-disk rule allows a center in a larger disk (varying radii), not in a smaller.
+// prior-disk rule allows a center in a larger disk (varying radii), not in a smaller;
+// disks on different patches never conflict.
 DiskId conflicting_disk(const SurfacePacking& packing, DiskId i) {
   const Vec3 c = packing.center(i);
   DiskId found = kNoDisk;
   packing.any_near(c, packing.radius(i), [&](DiskId j) {
-    if (j == i || !is_conflict(squared_norm(packing.center(j) - c), std::min(packing.radius(i), packing.radius(j))))
+    if (j == i || !is_conflict(squared_norm(packing.center(j) - c), std::min(packing.radius(i), packing.radius(j))) ||
+        !packing.share_patch(packing.patches(i), packing.patches(j)))
       return false;
     found = j;
     return true;

@@ -92,7 +92,11 @@ std::optional<RemeshResult> remesh_at(const std::shared_ptr<const SurfaceDomain>
   const std::string radius_advice = "(a smaller radius)";
   const std::size_t advice = out.check.problems.rfind(radius_advice);
   if (advice != std::string::npos) out.check.problems.replace(advice, radius_advice.size(), "(ask for more vertices)");
-  for (const DiskId id : packing.ids()) out.radii.push_back(packing.radius(id));
+  for (const DiskId id : packing.ids()) {
+    out.radii.push_back(packing.radius(id));
+    out.input_triangles.push_back(packing.point(id).triangle);
+    out.on_curves.push_back(packing.flags(id) & kFixed);
+  }
   return out;
 }
 
