@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,8 @@
 #include "disktune/sizing.h"
 #include "disktune/surface_domain.h"
 #include "disktune/surface_geometry.h"
+#include "../src/domain/thickness_limits.h"
+#include "disktune/surface_features.h"
 #include "surface_checks.h"
 #include "test_util.h"
 
@@ -354,13 +357,13 @@ TEST(SurfaceSizing, ThicknessSearchMatchesAllTrianglesByBruteForce) {
     std::vector<double> radii(p.size());
     for (std::size_t v = 0; v < p.size(); ++v) {
       const Vec3 n = normal[v] * (1 / norm(normal[v]));
-      double thickness = reach;
+      double thickness = std::numeric_limits<double>::infinity();  // nothing within reach
       for (std::size_t t = 0; t < d->triangles().size(); ++t) {
         const auto& tri = d->triangles()[t];
         if (tri[0] == v || tri[1] == v || tri[2] == v || !(dot(facing[t], n) < -0.5)) continue;
         const Vec3 q = closest_point_on_triangle(p[v], p[tri[0]], p[tri[1]], p[tri[2]]);
         const double dist = norm(q - p[v]);
-        if (std::abs(dot(q - p[v], n)) >= 0.5 * dist) thickness = std::min(thickness, dist);
+        if (dist < reach && std::abs(dot(q - p[v], n)) >= 0.5 * dist) thickness = std::min(thickness, dist);
       }
       radii[v] = std::min(r_max, kFeatureShare * thickness);
     }
@@ -371,6 +374,38 @@ TEST(SurfaceSizing, ThicknessSearchMatchesAllTrianglesByBruteForce) {
     for (std::size_t v = 0; v < radii.size(); ++v) differ += sizing.vertex_radii()[v] != radii[v];
     EXPECT_EQ(differ, 0u) << file;
     EXPECT_LT(sizing.min_radius(), r_max) << file;  // something was found
+  }
+}
+
+// Where nothing faces a vertex within reach, its radius is r_max to the bit: it was
+// 0.45 x (r_max / 0.45), which rounds below r_max for some r_max, so a sizing meant to be
+// r_max everywhere was 1 ulp short nearly everywhere (and never constant for remesh).
+TEST(SurfaceSizing, ThicknessKeepsRMaxExactlyWhereNothingIsNear) {
+  const auto cube = test::box_surface({1, 1, 1}, {4, 4, 4});
+  std::size_t rounding_below = 0;
+  for (double r = 0.05; r < 0.07; r += 0.00037) {
+    rounding_below += kFeatureShare * (r / kFeatureShare) < r;
+    const SurfaceSizing s = thickness_sizing(*cube, r);
+    for (const double radius : s.vertex_radii()) ASSERT_EQ(radius, r) << "r_max " << r;
+  }
+  EXPECT_GT(rounding_below, 0u);  // the radii where the old formula fell short were tried
+}
+
+// remesh's graded try measures the surface once (thickness_limits, with a reach for the
+// largest radius) and makes every sizing of its search from that: the same radii to the
+// bit as thickness_sizing at each radius, features and curve gaps included.
+TEST(SurfaceSizing, ThicknessFromLimitsMeasuredOnceEqualsThicknessSizing) {
+  SurfaceDomain fandisk = *test::surface_file("fandisk.off");
+  fandisk.set_features(detect_features(fandisk, {60, 60}));
+  const std::vector<double> limits = detail::thickness_limits(fandisk, 2 * 0.2 / kFeatureShare);
+  for (const double r : {0.01, 0.02, 0.031, 0.048, 0.05666, 0.0584, 0.06036, 0.1, 0.2}) {
+    const SurfaceSizing once = detail::thickness_sizing_from(fandisk, r, limits);
+    const SurfaceSizing each = thickness_sizing(fandisk, r);
+    ASSERT_EQ(once.vertex_radii().size(), each.vertex_radii().size());
+    std::size_t differ = 0;
+    for (std::size_t v = 0; v < once.vertex_radii().size(); ++v) differ += once.vertex_radii()[v] != each.vertex_radii()[v];
+    EXPECT_EQ(differ, 0u) << "r " << r;
+    EXPECT_EQ(once.description(), each.description()) << "r " << r;
   }
 }
 

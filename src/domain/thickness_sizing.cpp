@@ -27,6 +27,7 @@
 #include "box_tree.h"
 #include "curve_clearance.h"
 #include "surface_sizing_util.h"
+#include "thickness_limits.h"
 
 namespace disktune {
 namespace {
@@ -60,14 +61,9 @@ std::vector<Vec3> vertex_normals(const SurfaceDomain& d) {
 
 }  // namespace
 
-SurfaceSizing thickness_sizing(const SurfaceDomain& domain, double r_max, double gradation) {
-  using detail::number_text;
-  using detail::short_text;
-  if (!std::isfinite(r_max) || !(r_max > 0) || !std::isfinite(gradation) || !(gradation > 0) || !(gradation < 0.5)) {
-    throw InvalidInput("thickness sizing with r_max = " + number_text(r_max) + ", gradation " + number_text(gradation) +
-                       " is not valid: it needs r_max > 0 and 0 < gradation < 0.5 (e.g. auto:0.02 or auto:0.02,0.3)");
-  }
-  const double reach = r_max / kFeatureShare;  // no part farther than this lowers r
+namespace detail {
+
+std::vector<double> thickness_limits(const SurfaceDomain& domain, double reach) {
   std::vector<detail::BoxTree::Box> boxes;
   for (const auto& tri : domain.triangles())
     boxes.push_back(detail::BoxTree::box_of(std::array<Vec3, 3>{domain.vertices()[tri[0]], domain.vertices()[tri[1]], domain.vertices()[tri[2]]}));
@@ -75,10 +71,8 @@ SurfaceSizing thickness_sizing(const SurfaceDomain& domain, double r_max, double
   const std::vector<Vec3> normal = vertex_normals(domain), facing = triangle_normals(domain);
   const auto& triangles = domain.triangles();
   const auto& points = domain.vertices();
-  const std::vector<double> clearance = detail::curve_clearance(domain, reach);
-  std::vector<double> radii(points.size(), r_max);
-  std::size_t thinnest = 0;
-  for (std::size_t v = 0; v < radii.size(); ++v) {
+  std::vector<double> limits = detail::curve_clearance(domain, reach);
+  for (std::size_t v = 0; v < limits.size(); ++v) {
     const Vec3 p = points[v];
     const double thickness = tree.nearest(p, reach, [&](std::uint32_t t) {
       const auto& tri = triangles[t];
@@ -87,7 +81,26 @@ SurfaceSizing thickness_sizing(const SurfaceDomain& domain, double r_max, double
       const double d = norm(q - p);
       return std::abs(dot(q - p, normal[v])) >= 0.5 * d ? d : kNone;
     });
-    radii[v] = std::min({r_max, kFeatureShare * thickness, kCurveGapShare * clearance[v]});
+    // Nothing within reach gives reach back: no limit (kFeatureShare x (r_max /
+    // kFeatureShare) can round below r_max, which made radii 1 ulp short everywhere).
+    const auto share = [&](double share, double d) { return d < reach ? share * d : kNone; };
+    limits[v] = std::min(share(kFeatureShare, thickness), share(kCurveGapShare, limits[v]));
+  }
+  return limits;
+}
+
+SurfaceSizing thickness_sizing_from(const SurfaceDomain& domain, double r_max, const std::vector<double>& limits,
+                                    double gradation) {
+  using detail::number_text;
+  using detail::short_text;
+  if (!std::isfinite(r_max) || !(r_max > 0) || !std::isfinite(gradation) || !(gradation > 0) || !(gradation < 0.5)) {
+    throw InvalidInput("thickness sizing with r_max = " + number_text(r_max) + ", gradation " + number_text(gradation) +
+                       " is not valid: it needs r_max > 0 and 0 < gradation < 0.5 (e.g. auto:0.02 or auto:0.02,0.3)");
+  }
+  std::vector<double> radii(limits.size(), r_max);
+  std::size_t thinnest = 0;
+  for (std::size_t v = 0; v < radii.size(); ++v) {
+    radii[v] = std::min(r_max, limits[v]);
     if (radii[v] < radii[thinnest]) thinnest = v;
   }
   const double smallest = radii[thinnest];
@@ -103,6 +116,17 @@ SurfaceSizing thickness_sizing(const SurfaceDomain& domain, double r_max, double
     description += " near (" + short_text(at.x) + ", " + short_text(at.y) + ", " + short_text(at.z) + ")";
   }
   return SurfaceSizing::per_vertex(domain, std::move(radii), std::move(description));
+}
+
+}  // namespace detail
+
+SurfaceSizing thickness_sizing(const SurfaceDomain& domain, double r_max, double gradation) {
+  // Bad values are refused before the search (thickness_sizing_from says why).
+  if (!std::isfinite(r_max) || !(r_max > 0) || !(gradation > 0) || !(gradation < 0.5)) {
+    return detail::thickness_sizing_from(domain, r_max, {}, gradation);
+  }
+  return detail::thickness_sizing_from(domain, r_max, detail::thickness_limits(domain, r_max / kFeatureShare),
+                                       gradation);
 }
 
 }  // namespace disktune
