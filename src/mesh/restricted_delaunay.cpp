@@ -181,6 +181,32 @@ void drop_crossings(SurfaceMesh& mesh, const std::vector<std::uint32_t>& sample_
   mesh.triangles.erase(std::remove_if(mesh.triangles.begin(), mesh.triangles.end(), extra), mesh.triangles.end());
 }
 
+/// Removes flaps: a triangle with one edge in no other triangle and its other two edges
+/// in three or more. Three faces of a tetrahedron kept around a vertex (their dual edges
+/// all meet the surface near a crease) make one, and without it each of its edges is in
+/// two triangles or none (the elephant at r = 0.01, seed 587: edges in three triangles and
+/// a hole). The lone edge must not be one of an open boundary: on an open surface it needs
+/// an end that is no fixed disk (`sample_patch` not kAnyPatch).
+void drop_flaps(SurfaceMesh& mesh, const std::vector<std::uint32_t>& sample_patch, bool closed) {
+  std::unordered_map<std::uint64_t, int> uses;
+  uses.reserve(2 * mesh.triangles.size());
+  for (const auto& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k) ++uses[edge_key(t[k], t[(k + 1) % 3])];
+  // One at a time, the counts kept up to date: two flaps on one edge must not both go.
+  const auto flap = [&](const std::array<std::uint32_t, 3>& t) {
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t a = t[k], b = t[(k + 1) % 3], c = t[(k + 2) % 3];
+      if (uses[edge_key(a, b)] == 1 && uses[edge_key(b, c)] >= 3 && uses[edge_key(c, a)] >= 3 &&
+          (closed || sample_patch[a] != kAnyPatch || sample_patch[b] != kAnyPatch)) {
+        for (int e = 0; e < 3; ++e) --uses[edge_key(t[e], t[(e + 1) % 3])];
+        return true;
+      }
+    }
+    return false;
+  };
+  mesh.triangles.erase(std::remove_if(mesh.triangles.begin(), mesh.triangles.end(), flap), mesh.triangles.end());
+}
+
 /// The fan of triangles around x from a to b that starts with `first` (which holds a
 /// and x): the triangles in order and the rim a, y1, .., yk, b. Empty if the walk meets
 /// an edge xy not in exactly two triangles, or does not reach b within a few steps.
@@ -733,6 +759,7 @@ SurfaceMesh detail::restricted_delaunay(const std::vector<Vec3>& samples, const 
   if (counts) *counts = duals.counts;
   cap_fans_across_creases(mesh, feature_edges);
   drop_crossings(mesh, sample_patch);
+  drop_flaps(mesh, sample_patch, surface.is_closed());
   detail::cap_bow_ties(mesh);
   // Deterministic order whatever CGAL's internal one: by the triangles' vertex indices.
   std::sort(mesh.triangles.begin(), mesh.triangles.end());
