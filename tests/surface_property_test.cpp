@@ -20,7 +20,9 @@
 #include <string>
 #include <vector>
 
+#include "disktune/surface_features.h"
 #include "disktune/surface_io.h"
+#include "disktune/surface_sampling.h"
 #include "disktune/surface_tuning.h"
 #include "disktune/surface_voids.h"
 #include "surface_checks.h"
@@ -90,6 +92,65 @@ TEST(SurfaceVoids, AHoleWhoseVerticesAllLieOnThirdCirclesIsFound) {
     void_points_near(packing, origin, 0.5, {}, found);
     EXPECT_FALSE(found.empty());
     for (const SurfaceVoidPoint& v : found) EXPECT_LT(norm(v.at.p - origin), 0.25);
+  }
+}
+
+// A small move is checked without listing the moved disk's void: void_points_near_within
+// gives the listing's answer (void_points_near, each point tested against the moved
+// disk) on hundreds of random moves, and the oracle's, which judges the whole packing
+// after the move, on a dozen of them of each answer. Surfaces with features (patches),
+// an open boundary, steps from 0.05 r to 0.9 r, so both answers come up.
+TEST(SurfaceVoids, AMovedDiskHoldsItsVoidExactlyWhenThePackingStaysMaximal) {
+  struct Case {
+    const char* file;
+    double r;
+    bool features;
+  };
+  for (const auto& [file, r, features] :
+       {Case{"fandisk.off", 0.04, true}, Case{"elephant.off", 0.02, true}, Case{"mesh_with_border.off", 0.3, false}}) {
+    SCOPED_TRACE(file);
+    SurfaceDomain d = *surface_file(file);
+    if (features) d.set_features(detect_features(d, {60, 60}));
+    const auto surface = std::make_shared<const SurfaceDomain>(std::move(d));
+    Rng rng(5);
+    SurfacePacking packing = sample_mps(surface, SurfaceSizing::constant(r), rng);
+    const std::vector<DiskId> ids = packing.ids();
+    const double reach = r * (1 + 1e-6);  // the lifted disk's void lies within it
+    std::size_t tried = 0, judged[2] = {0, 0};
+    for (int k = 0; k < 3000; ++k) {  // most random steps meet a neighbour
+      const DiskId p = ids[uniform_index(rng, ids.size())];
+      if (packing.flags(p) & kFixed) continue;
+      const SurfacePoint from = packing.point(p);
+      const auto& tri = surface->triangles()[from.triangle];
+      const Vec3 a = surface->vertices()[tri[0]], n = cross(surface->vertices()[tri[1]] - a, surface->vertices()[tri[2]] - a);
+      Vec3 u{uniform01(rng) - 0.5, uniform01(rng) - 0.5, uniform01(rng) - 0.5};
+      u = u - n * (dot(u, n) / dot(n, n));
+      if (!(norm(u) > 1e-3)) continue;
+      const SurfacePoint to =
+          test::nearest_surface_point(packing, from.p + u * (r * (0.05 + 0.85 * uniform01(rng)) / norm(u)));
+      if (packing.conflicts(to, p)) continue;
+      ++tried;
+      const HoldingBall ball{to.p, r, packing.patches_of(to)};
+      const bool fast = void_points_near_within(packing, from.p, reach, {p}, ball);
+      std::vector<SurfaceVoidPoint> voids;
+      void_points_near(packing, from.p, reach, {p}, voids);
+      bool listed = true;
+      for (const SurfaceVoidPoint& v : voids)
+        listed = listed && is_covered(squared_norm(v.at.p - to.p), r) &&
+                 packing.share_patch(packing.index().patch_of_triangle(v.at.triangle), ball.patches);
+      ASSERT_EQ(fast, listed) << "move " << k << " of disk " << p << ", " << voids.size() << " void points";
+      if (judged[fast] == 6) continue;
+      ++judged[fast];
+      packing.move(p, to);
+      const auto report = surface_report(packing);
+      EXPECT_EQ(report.ok(), fast) << "move " << k << " of disk " << p << ": " << report.summary();
+      packing.move(p, from);
+    }
+    std::printf("[ moves ] %s r %.2f: %zu moves compared with the listing, %zu / %zu judged by the oracle (held / not)\n",
+                file, r, tried, judged[1], judged[0]);
+    EXPECT_GT(tried, 300u);
+    EXPECT_EQ(judged[1], 6u);
+    EXPECT_EQ(judged[0], 6u);
   }
 }
 

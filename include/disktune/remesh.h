@@ -30,7 +30,7 @@ struct RemeshOptions {
   /// Relaxation sweeps after the count is reached (relax, surface_tuning.h): the disks
   /// move toward a hexagonal spacing while the packing stays conflict-free and maximal,
   /// which makes the triangles closer to equilateral; then the obtuse angles of the mesh
-  /// are opened (open_obtuse_angles) and the surface meshed again, up to three times.
+  /// are opened (open_obtuse_angles, three passes) and the surface meshed again, twice.
   /// 0: neither.
   int relax_sweeps = 30;
   std::uint64_t seed = 1;

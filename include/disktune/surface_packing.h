@@ -39,15 +39,13 @@ struct SurfacePoint {
   std::uint32_t triangle = 0;
 };
 
-/// A uniform grid over space for items given by position (disks) or by a set of cells
-/// (triangles). Cells are keyed by their integer coordinates in a hash map, so empty
-/// space costs nothing.
+/// A uniform grid over space for items given by position (disks). Cells are keyed by
+/// their integer coordinates in a hash map, so empty space costs nothing.
 class SpaceGrid {
  public:
   explicit SpaceGrid(double cell) : cell_(cell) {}
   double cell() const { return cell_; }
   void insert(std::uint32_t id, Vec3 p) { cells_[key(p)].push_back(id); }
-  void insert_in_cell(std::uint32_t id, std::uint64_t k) { cells_[k].push_back(id); }
   void remove(std::uint32_t id, Vec3 p);
   std::uint64_t key(Vec3 p) const;
   /// f(id) for every item in a cell meeting the box [q - R, q + R].
@@ -66,11 +64,15 @@ class SpaceGrid {
   std::int64_t coord(double v) const;
 };
 
-/// The triangles of a surface with their planes, and a grid to find those near a point.
+namespace detail {
+class BoxTree;
+}
+
+/// The triangles of a surface with their planes, and a bounding-box tree to find those
+/// near a point.
 class SurfaceIndex {
  public:
-  /// `cell` is the grid's cell size; a multiple of the largest radius works well.
-  SurfaceIndex(std::shared_ptr<const SurfaceDomain> domain, double cell);
+  explicit SurfaceIndex(std::shared_ptr<const SurfaceDomain> domain);
   const SurfaceDomain& domain() const { return *domain_; }
   std::shared_ptr<const SurfaceDomain> domain_ptr() const { return domain_; }
   const TrianglePlane& plane(std::size_t t) const { return planes_[t]; }
@@ -99,14 +101,11 @@ class SurfaceIndex {
  private:
   std::shared_ptr<const SurfaceDomain> domain_;
   std::vector<TrianglePlane> planes_;
-  struct Bound {  // a ball around a triangle: a cheap first test in triangles_near
-    Vec3 center;
-    double radius;
-  };
-  std::vector<Bound> bounds_;
   std::vector<double> cumulative_area_;
   std::vector<std::vector<std::uint32_t>> curve_triangle_;  // per fixed curve, per edge
-  SpaceGrid grid_;
+  // A tree, not a grid: a ball query visits the few boxes near it, where a grid of cells
+  // some radii wide hashed 8-27 cells, most of them holding no triangle near the ball.
+  std::shared_ptr<const detail::BoxTree> tree_;
   // Patches, where features cut the surface. Sets of two or more patches (those of a
   // feature edge's sides and around a feature vertex) are numbered from patch_count_ on:
   // patch_sets_[set - patch_count_], sorted. Per triangle touching a feature, the set of

@@ -35,6 +35,21 @@ void void_points_in_cell(const SurfacePacking& packing, std::size_t t, const std
 void void_points_near(const SurfacePacking& packing, Vec3 q, double R,
                       const std::vector<DiskId>& ignore, std::vector<SurfaceVoidPoint>& out);
 
+/// A ball that holds the points within `radius` of `center` (is_covered) on the patches
+/// `patches`: a disk's reach where it counts.
+struct HoldingBall {
+  Vec3 center;
+  double radius;
+  PatchSet patches;
+};
+
+/// True when `ball` holds every void point within R of q (the disks in `ignore` lifted):
+/// void_points_near's answer checked point by point, without listing them. Triangles and
+/// circles well inside the ball are passed over, and it stops at the first void point
+/// outside it, so a disk's small move is checked at a fraction of the cost.
+bool void_points_near_within(const SurfacePacking& packing, Vec3 q, double R, const std::vector<DiskId>& ignore,
+                             const HoldingBall& ball);
+
 /// True when no triangle has a void point: the surface is covered (up to the tolerance).
 bool is_maximal(const SurfacePacking& packing);
 

@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Items with a bounding box (triangles, edges) in a bounding-box tree (internal), for
-// the surface sizings that look for the nearest part of the mesh meeting a condition.
-// Branch and bound: a subtree is skipped when its box is no nearer than the best found,
-// so a query costs about the items nearer than its answer, not all items within a fixed
-// reach (a grid of cells `reach` wide made the thickness sizing quadratic once the reach
-// spanned the model: 35 s for 89K triangles at auto:0.2).
+// Items with a bounding box (triangles, edges) in a bounding-box tree (internal): the
+// items near a point (SurfaceIndex::triangles_near), and for the surface sizings the
+// nearest part of the mesh meeting a condition. Branch and bound: a subtree is skipped
+// when its box is no nearer than the best found, so a query costs about the items
+// nearer than its answer, not all items within a fixed reach (a grid of cells `reach`
+// wide made the thickness sizing quadratic once the reach spanned the model: 35 s for
+// 89K triangles at auto:0.2).
 #pragma once
 
 #include <algorithm>
@@ -39,6 +40,26 @@ class BoxTree {
     return best;
   }
 
+  /// f(item) for each item whose box comes within R of p, in no set order.
+  template <class F>
+  void for_each_within(Vec3 p, double R, F&& f) const {
+    if (nodes_.empty()) return;
+    thread_local std::vector<std::uint32_t> stack;
+    stack.assign(1, 0);
+    const double R2 = R * R;
+    while (!stack.empty()) {
+      const Node& n = nodes_[stack.back()];
+      stack.pop_back();
+      if (box_distance2(n.box, p) > R2) continue;
+      if (n.left != 0) {
+        stack.push_back(n.left), stack.push_back(n.right);
+        continue;
+      }
+      for (std::uint32_t i = n.begin; i < n.end; ++i)
+        if (box_distance2(boxes_[order_[i]], p) <= R2) f(order_[i]);
+    }
+  }
+
   /// The bounding box of some points.
   template <class Points>
   static Box box_of(const Points& points) {
@@ -59,11 +80,12 @@ class BoxTree {
   static constexpr std::size_t kLeaf = 8;
 
   static double axis(Vec3 p, int a) { return a == 0 ? p.x : a == 1 ? p.y : p.z; }
-  static double box_distance(const Box& b, Vec3 p) {
+  static double box_distance2(const Box& b, Vec3 p) {
     const double dx = std::max({b.lo.x - p.x, 0.0, p.x - b.hi.x}), dy = std::max({b.lo.y - p.y, 0.0, p.y - b.hi.y}),
                  dz = std::max({b.lo.z - p.z, 0.0, p.z - b.hi.z});
-    return std::sqrt(dx * dx + dy * dy + dz * dz);
+    return dx * dx + dy * dy + dz * dz;
   }
+  static double box_distance(const Box& b, Vec3 p) { return std::sqrt(box_distance2(b, p)); }
 
   // Splits order_[begin, end) at the median of the box centers along the longest side.
   std::uint32_t build(std::size_t begin, std::size_t end) {

@@ -7,8 +7,8 @@
 
 #include "disktune/errors.h"
 #include "disktune/tolerance.h"
+#include "../domain/box_tree.h"
 #include "../domain/precision.h"
-#include "../geometry/triangle_regions.h"
 
 namespace disktune {
 
@@ -46,31 +46,22 @@ void SpaceGrid::remove(std::uint32_t id, Vec3 p) {
 
 // ---- SurfaceIndex ----
 
-SurfaceIndex::SurfaceIndex(std::shared_ptr<const SurfaceDomain> domain, double cell)
-    : domain_(std::move(domain)), grid_(cell) {
+SurfaceIndex::SurfaceIndex(std::shared_ptr<const SurfaceDomain> domain) : domain_(std::move(domain)) {
   const auto& v = domain_->vertices();
   const auto& tris = domain_->triangles();
   planes_.reserve(tris.size());
   cumulative_area_.reserve(tris.size());
+  std::vector<detail::BoxTree::Box> boxes;
+  boxes.reserve(tris.size());
   double area = 0;
-  std::vector<std::uint64_t> keys;
   for (std::size_t t = 0; t < tris.size(); ++t) {
     const Vec3 a = v[tris[t][0]], b = v[tris[t][1]], c = v[tris[t][2]];
     planes_.emplace_back(a, b, c);
-    const Vec3 g = (a + b + c) * (1.0 / 3);
-    bounds_.push_back({g, std::sqrt(std::max({squared_norm(a - g), squared_norm(b - g), squared_norm(c - g)}))});
+    boxes.push_back(detail::BoxTree::box_of(std::array<Vec3, 3>{a, b, c}));
     area += 0.5 * norm(cross(b - a, c - a));
     cumulative_area_.push_back(area);
-    // Register the cells of the centers of regions of radius cell/2 that cover the
-    // triangle: every point of it is then within cell/2 of a registered point, so within
-    // triangles_near's margin of half a cell. (The regions follow the triangle's width:
-    // a needle costs its length, not its length squared.)
-    keys.clear();
-    for_each_region(planes_.back(), cell * std::sqrt(0.5) * (1 - 1e-9), [&](Vec3 q, double) { keys.push_back(grid_.key(q)); });
-    std::sort(keys.begin(), keys.end());
-    keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
-    for (const std::uint64_t k : keys) grid_.insert_in_cell(static_cast<std::uint32_t>(t), k);
   }
+  tree_ = std::make_shared<const detail::BoxTree>(boxes);
   // A triangle at each edge of each fixed curve, by the edge's vertex pair.
   std::unordered_map<std::uint64_t, std::uint32_t> by_edge;
   auto edge_key = [](std::uint64_t a, std::uint64_t b) { return a < b ? a << 32 | b : b << 32 | a; };
@@ -160,12 +151,8 @@ SurfacePoint SurfaceIndex::on_curve(std::size_t c, std::size_t k, double s) cons
 
 void SurfaceIndex::triangles_near(Vec3 q, double R, std::vector<std::uint32_t>& out) const {
   out.clear();
-  grid_.for_each_in_box(q, R + 0.5 * grid_.cell(), [&](std::uint32_t t) {
-    const double reach = R + bounds_[t].radius;
-    if (squared_norm(bounds_[t].center - q) <= reach * reach) out.push_back(t);
-  });
+  tree_->for_each_within(q, R, [&](std::uint32_t t) { out.push_back(t); });
   std::sort(out.begin(), out.end());
-  out.erase(std::unique(out.begin(), out.end()), out.end());
 }
 
 Vec3 SurfaceIndex::closest_point(std::size_t t, Vec3 p) const {
@@ -189,20 +176,8 @@ SurfacePoint SurfaceIndex::point_by_area(double u1, double u2, double u3) const 
 
 // ---- SurfacePacking ----
 
-namespace {
-double index_cell(const SurfaceDomain& domain, const SurfaceSizing& sizing) {
-  // Cells of about two radii, or of the mean edge where triangles are larger (else a
-  // coarse mesh and small disks register each triangle in thousands of cells).
-  double edges = 0;
-  for (const auto& t : domain.triangles())
-    for (int k = 0; k < 3; ++k) edges += norm(domain.vertices()[t[(k + 1) % 3]] - domain.vertices()[t[k]]);
-  const double mean_edge = edges / (3.0 * domain.triangles().size());
-  return std::max(2 * sizing.max_radius(), mean_edge);
-}
-}  // namespace
-
 SurfacePacking::SurfacePacking(std::shared_ptr<const SurfaceDomain> domain, SurfaceSizing sizing)
-    : index_(std::make_shared<const SurfaceIndex>(domain, index_cell(*domain, sizing))),
+    : index_(std::make_shared<const SurfaceIndex>(domain)),
       sizing_(std::make_shared<const SurfaceSizing>(std::move(sizing))),
       grid_(2 * sizing_->max_radius()) {
   const Vec3 lo = domain->bbox_min(), hi = domain->bbox_max();

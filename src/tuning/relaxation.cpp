@@ -35,14 +35,11 @@ double move_toward(P& packing, DiskId p, typename detail::Space<P>::Location to)
   const auto c = packing.center(p);
   const double r = packing.radius(p);
   auto step = to - c;
-  std::vector<typename S::VoidPoint> voids;  // found once, when a first place meets no disk
-  bool found = false;
   double part = 1;
   for (int halvings = 0; halvings < 3; ++halvings, step = step * 0.5, part *= 0.5) {
     typename S::Point x;
     if (!S::project(packing, p, c + step, x) || packing.conflicts(x, p)) continue;
-    if (!found) voids = S::voids_in(packing, c, S::void_reach(r), {p}), found = true;
-    if (!S::covers_all(packing, x, voids)) continue;
+    if (!S::covers_lifted_voids(packing, c, S::void_reach(r), p, x)) continue;
     detail::BasicUndoLog<P> log(packing);
     log.move(p, x);
     // With one radius covers_all is exact; with a sizing p's radius changed on the way.

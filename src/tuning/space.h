@@ -14,6 +14,9 @@
 //   voids_in(P, c, R, ignore)  the void points within R of c, `ignore` lifted
 //   void_choice(P, voids, rng) where a new disk goes: largest weighted diameter
 //   covers_all(P, x, voids)    a disk at x holds every void point
+//   covers_lifted_voids(P, c, R, p, x)  covers_all(P, x, voids_in(P, c, R, {p})): disk
+//                    p moved from c to x still holds its own void (on a surface without
+//                    listing the void points, much faster)
 //   mobile_neighbors(P, c, r, self, rng)  movable disks overlapping a disk (c, r)
 //   repair_void(log, P, c, R, rng, max)   fill the voids within R of c
 //   void_free_near(P, c, r)    no void within D(c, r): the exact check after a change
@@ -79,6 +82,9 @@ struct Space<Packing> {
   }
   static bool covers_all(const Packing& packing, Point x, const std::vector<VoidPoint>& voids) {
     return detail::covers_all(packing, x, voids);
+  }
+  static bool covers_lifted_voids(const Packing& packing, Location c, double R, DiskId p, Point x) {
+    return detail::covers_all(packing, x, voids_in(packing, c, R, {p}));
   }
   // Planar radii follow the position (radius_at), so `r` is implied by c.
   static std::vector<Near> mobile_neighbors(const Packing& packing, Location c, double /*r*/, DiskId self,
@@ -190,6 +196,9 @@ struct Space<SurfacePacking> {
   static bool covers_all(const SurfacePacking& packing, const Point& x, const std::vector<VoidPoint>& voids) {
     return detail::covers_all(packing, x, voids);
   }
+  static bool covers_lifted_voids(const SurfacePacking& packing, Location c, double R, DiskId p, const Point& x) {
+    return detail::covers_lifted_voids(packing, c, R, p, x);
+  }
   static std::vector<Near> mobile_neighbors(const SurfacePacking& packing, Location c, double r, DiskId self,
                                             Rng& rng) {
     std::vector<Near> out;
@@ -242,7 +251,7 @@ struct Space<SurfacePacking> {
   static bool project(const SurfacePacking& packing, DiskId p, Location y, Point& x) {
     const SurfaceIndex& index = packing.index();
     const Vec3 n = index.plane(packing.point(p).triangle).normal();
-    std::vector<std::uint32_t> tris;
+    thread_local std::vector<std::uint32_t> tris;
     index.triangles_near(y, norm(y - packing.center(p)) + 1e-9 * packing.radius(p), tris);
     double best = 1e300;
     for (const std::uint32_t t : tris) {

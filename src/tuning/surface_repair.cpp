@@ -28,15 +28,23 @@ SurfacePoint void_point_choice(const SurfacePacking& packing, const std::vector<
   return voids[k].at;
 }
 
-bool covers_all(const SurfacePacking& packing, const SurfacePoint& c, const std::vector<SurfaceVoidPoint>& voids) {
+HoldingBall holding_ball(const SurfacePacking& packing, const SurfacePoint& c) {
   const double r = packing.radius_at(c);
-  const double inside = packing.sizing().is_constant() ? r : r * (1 - 1e-7);
-  const PatchSet on = packing.patches_of(c);
+  return {c.p, packing.sizing().is_constant() ? r : r * (1 - 1e-7), packing.patches_of(c)};
+}
+
+bool covers_all(const SurfacePacking& packing, const SurfacePoint& c, const std::vector<SurfaceVoidPoint>& voids) {
+  const HoldingBall ball = holding_ball(packing, c);
   for (const SurfaceVoidPoint& v : voids) {
-    if (!is_covered(squared_norm(c.p - v.at.p), inside) || !packing.share_patch(packing.index().patch_of_triangle(v.at.triangle), on))
+    if (!is_covered(squared_norm(ball.center - v.at.p), ball.radius) ||
+        !packing.share_patch(packing.index().patch_of_triangle(v.at.triangle), ball.patches))
       return false;
   }
   return true;
+}
+
+bool covers_lifted_voids(const SurfacePacking& packing, Vec3 c, double R, DiskId p, const SurfacePoint& x) {
+  return void_points_near_within(packing, c, R, {p}, holding_ball(packing, x));
 }
 
 namespace {

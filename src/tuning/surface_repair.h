@@ -30,6 +30,14 @@ SurfacePoint void_point_choice(const SurfacePacking& packing, const std::vector<
 /// With a sizing each must lie inside by 1e-7 r (see void_repair.h's covers_all).
 bool covers_all(const SurfacePacking& packing, const SurfacePoint& c, const std::vector<SurfaceVoidPoint>& voids);
 
+/// What a disk at c holds in covers_all's sense: its radius (less 1e-7 r with a
+/// sizing) on its patches.
+HoldingBall holding_ball(const SurfacePacking& packing, const SurfacePoint& c);
+
+/// covers_all(packing, x, voids_near(packing, c, R, {p})), at a fraction of its cost
+/// (void_points_near_within): whether disk p, moved to x, still holds its own void.
+bool covers_lifted_voids(const SurfacePacking& packing, Vec3 c, double R, DiskId p, const SurfacePoint& x);
+
 /// Positions within R of `near` where a disk covers every void point (covers_all) and
 /// conflicts with no disk but `self` and `passable`: the vertices of the arrangement of
 /// the balls around the void points and the other disks' spheres, cut with the triangles

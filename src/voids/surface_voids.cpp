@@ -68,37 +68,65 @@ bool vertex_covered(const SurfacePacking& packing, const TrianglePlane& plane, P
   return cover.covered();
 }
 
-// The void points of triangle t within R of q (R infinite: all of them); `near` holds
-// disks_near(q, R) (for the whole triangle: around a point of it, reaching all of it).
-void collect(const SurfacePacking& packing, std::size_t t, Vec3 q, double R, const std::vector<DiskId>& near,
-             std::vector<SurfaceVoidPoint>& out) {
+// Calls on_void(p, a, b) for each void point of triangle t within R of q (R infinite:
+// all of them) but those `held` holds (none: all count), and stops, returning false, as
+// soon as on_void does. `near` holds disks_near(q, R) (for the whole triangle: around a
+// point of it, reaching all of it).
+template <class OnVoid>
+bool scan_triangle(const SurfacePacking& packing, std::size_t t, Vec3 q, double R, const std::vector<DiskId>& near,
+                   const HoldingBall* held, OnVoid&& on_void) {
   const SurfaceIndex& index = packing.index();
+  const TrianglePlane& plane = index.plane(t);
+  const PatchSet patch = index.patch_of_triangle(t);
+  // What lies well inside `held` (by 1e-9 of its radius, past any rounding of the
+  // points made below) needs no look: a triangle with its corners there, a circle there.
+  std::optional<Circle> held_circle;
+  if (held && packing.share_patch(held->patches, patch)) {
+    const double sure = held->radius * (1 - 1e-9);
+    const auto& tri = packing.domain().triangles()[t];
+    const auto& v = packing.domain().vertices();
+    if (std::all_of(tri.begin(), tri.end(), [&](auto k) { return squared_norm(v[k] - held->center) <= sure * sure; }))
+      return true;
+    held_circle = plane.section(held->center, sure);
+    if (!held_circle) held_circle = Circle{{0, 0}, -1};  // shares the patch, misses the plane
+  } else {
+    held = nullptr;
+  }
   thread_local std::vector<Ball> balls;
   balls.clear();
-  const TrianglePlane& plane = index.plane(t);
   // Within the region, only circles passing within R of q make vertices there: in the
   // plane, within R' = sqrt(R^2 - h^2) of q's projection, h its height.
   const Vec2 q2 = plane.to_plane(q);
   const double h = plane.height(q), reach2 = std::isfinite(R) ? R * R - h * h : 0;
   const double reach = std::isfinite(R) ? std::sqrt(std::max(reach2, 0.0)) + kRelTol * R : 0;
-  const PatchSet patch = index.patch_of_triangle(t);
   for (const DiskId j : near) {
     if (!packing.share_patch(packing.patches(j), patch)) continue;  // it covers nothing here
     const Vec3 c = packing.center(j);
     const double r = packing.radius(j);
     if (squared_norm(index.closest_point(t, c) - c) > r * r * (1 + 4 * kRelTol)) continue;
-    if (std::isfinite(R)) {
-      const auto circle = plane.section(c, r);
-      if (!circle || std::abs(distance(circle->center, q2) - circle->radius) > reach) continue;
-    }
+    const auto circle = plane.section(c, r);
+    if (!circle) continue;
+    if (std::isfinite(R) && std::abs(distance(circle->center, q2) - circle->radius) > reach) continue;
+    if (held && distance(circle->center, held_circle->center) + circle->radius <= held_circle->radius) continue;
     balls.push_back({c, r, j});
   }
   const double R2 = std::isfinite(R) ? R * R : std::numeric_limits<double>::infinity();
   const double tol = kRelTol * packing.max_radius();
+  bool going = true;
   for_each_arrangement_vertex(plane, balls, tol, [&](Vec3 p, DiskId a, DiskId b) {
-    if (squared_norm(p - q) > R2) return;
-    if (!vertex_covered(packing, plane, patch, p, a, b, near, tol))
-      out.push_back({{p, static_cast<std::uint32_t>(t)}, a, b});
+    if (!going || squared_norm(p - q) > R2) return;
+    if (held && is_covered(squared_norm(p - held->center), held->radius)) return;
+    if (!vertex_covered(packing, plane, patch, p, a, b, near, tol)) going = on_void(p, a, b);
+  });
+  return going;
+}
+
+// The void points of triangle t within R of q (R infinite: all of them).
+void collect(const SurfacePacking& packing, std::size_t t, Vec3 q, double R, const std::vector<DiskId>& near,
+             std::vector<SurfaceVoidPoint>& out) {
+  scan_triangle(packing, t, q, R, near, nullptr, [&](Vec3 p, DiskId a, DiskId b) {
+    out.push_back({{p, static_cast<std::uint32_t>(t)}, a, b});
+    return true;
   });
 }
 
@@ -159,6 +187,19 @@ void void_points_near(const SurfacePacking& packing, Vec3 q, double R, const std
     if (squared_norm(packing.index().closest_point(t, q) - q) > R * R) continue;  // out of the region
     collect(packing, t, q, R, near, out);
   }
+}
+
+bool void_points_near_within(const SurfacePacking& packing, Vec3 q, double R, const std::vector<DiskId>& ignore,
+                             const HoldingBall& ball) {
+  thread_local std::vector<std::uint32_t> tris;
+  thread_local std::vector<DiskId> near;
+  packing.index().triangles_near(q, R, tris);
+  disks_near(packing, q, R, ignore, near);
+  for (const std::uint32_t t : tris) {
+    if (squared_norm(packing.index().closest_point(t, q) - q) > R * R) continue;  // out of the region
+    if (!scan_triangle(packing, t, q, R, near, &ball, [](Vec3, DiskId, DiskId) { return false; })) return false;
+  }
+  return true;
 }
 
 namespace {
