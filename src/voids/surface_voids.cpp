@@ -121,19 +121,6 @@ bool scan_triangle(const SurfacePacking& packing, std::size_t t, Vec3 q, double 
   return going;
 }
 
-// The void points of triangle t within R of q (R infinite: all of them).
-void collect(const SurfacePacking& packing, std::size_t t, Vec3 q, double R, const std::vector<DiskId>& near,
-             std::vector<SurfaceVoidPoint>& out) {
-  scan_triangle(packing, t, q, R, near, nullptr, [&](Vec3 p, DiskId a, DiskId b) {
-    out.push_back({{p, static_cast<std::uint32_t>(t)}, a, b});
-    return true;
-  });
-}
-
-}  // namespace
-
-namespace {
-
 // The void points of the triangle `corners` (inside domain triangle t, in its plane),
 // region by region.
 void void_points_of(const SurfacePacking& packing, std::size_t t, const std::array<Vec3, 3>& corners,
@@ -177,29 +164,37 @@ void void_points_in_cell(const SurfacePacking& packing, std::size_t t, const std
   void_points_of(packing, t, cell, {}, out);
 }
 
-void void_points_near(const SurfacePacking& packing, Vec3 q, double R, const std::vector<DiskId>& ignore,
-                      std::vector<SurfaceVoidPoint>& out) {
+namespace {
+
+// scan_triangle over every triangle within R of q, the disks in `ignore` lifted.
+template <class OnVoid>
+bool scan_region(const SurfacePacking& packing, Vec3 q, double R, const std::vector<DiskId>& ignore,
+                 const HoldingBall* held, OnVoid&& on_void) {
   thread_local std::vector<std::uint32_t> tris;
   thread_local std::vector<DiskId> near;
   packing.index().triangles_near(q, R, tris);
   disks_near(packing, q, R, ignore, near);
   for (const std::uint32_t t : tris) {
     if (squared_norm(packing.index().closest_point(t, q) - q) > R * R) continue;  // out of the region
-    collect(packing, t, q, R, near, out);
+    if (!scan_triangle(packing, t, q, R, near, held, [&](Vec3 p, DiskId a, DiskId b) { return on_void(t, p, a, b); }))
+      return false;
   }
+  return true;
+}
+
+}  // namespace
+
+void void_points_near(const SurfacePacking& packing, Vec3 q, double R, const std::vector<DiskId>& ignore,
+                      std::vector<SurfaceVoidPoint>& out) {
+  scan_region(packing, q, R, ignore, nullptr, [&](std::uint32_t t, Vec3 p, DiskId a, DiskId b) {
+    out.push_back({{p, t}, a, b});
+    return true;
+  });
 }
 
 bool void_points_near_within(const SurfacePacking& packing, Vec3 q, double R, const std::vector<DiskId>& ignore,
                              const HoldingBall& ball) {
-  thread_local std::vector<std::uint32_t> tris;
-  thread_local std::vector<DiskId> near;
-  packing.index().triangles_near(q, R, tris);
-  disks_near(packing, q, R, ignore, near);
-  for (const std::uint32_t t : tris) {
-    if (squared_norm(packing.index().closest_point(t, q) - q) > R * R) continue;  // out of the region
-    if (!scan_triangle(packing, t, q, R, near, &ball, [](Vec3, DiskId, DiskId) { return false; })) return false;
-  }
-  return true;
+  return scan_region(packing, q, R, ignore, &ball, [](std::uint32_t, Vec3, DiskId, DiskId) { return false; });
 }
 
 namespace {
