@@ -68,6 +68,27 @@ bool vertex_covered(const SurfacePacking& packing, const TrianglePlane& plane, P
   return cover.covered();
 }
 
+// Whether the part of a triangle within `reach` of q (in its plane) lies inside the disk
+// `held` (radius below 0: none). That part is convex, so its point farthest from held's
+// center is a corner, a crossing of an edge with the circle around q, or the point of
+// that circle farthest from held's center (along an arc the distance grows toward it).
+bool part_inside(const TrianglePlane& plane, Vec2 q, double reach, const Circle& held) {
+  if (held.radius < 0) return false;
+  const auto outside = [&](Vec2 p) { return squared_distance(p, held.center) > held.radius * held.radius; };
+  for (int k = 0; k < 3; ++k) {
+    const Vec2 a = plane.corner(k), e = plane.corner((k + 1) % 3) - a, f = a - q;
+    if (squared_norm(f) <= reach * reach && outside(a)) return false;
+    const double A = dot(e, e), B = dot(f, e), disc = B * B - A * (dot(f, f) - reach * reach);
+    if (!(disc >= 0)) continue;
+    for (const double s : {(-B - std::sqrt(disc)) / A, (-B + std::sqrt(disc)) / A})
+      if (s >= 0 && s <= 1 && outside(a + e * s)) return false;
+  }
+  const Vec2 away = q - held.center;
+  const double gap = norm(away);
+  const Vec2 far = q + (gap > 0 ? away * (reach / gap) : Vec2{reach, 0});
+  return !(plane.contains(far, kRelTol * reach) && outside(far));
+}
+
 // Calls on_void(p, a, b) for each void point of triangle t within R of q (R infinite:
 // all of them) but those `held` holds (none: all count), and stops, returning false, as
 // soon as on_void does. `near` holds disks_near(q, R) (for the whole triangle: around a
@@ -78,27 +99,24 @@ bool scan_triangle(const SurfacePacking& packing, std::size_t t, Vec3 q, double 
   const SurfaceIndex& index = packing.index();
   const TrianglePlane& plane = index.plane(t);
   const PatchSet patch = index.patch_of_triangle(t);
-  // What lies well inside `held` (by 1e-9 of its radius, past any rounding of the
-  // points made below) needs no look: a triangle with its corners there, a circle there.
-  std::optional<Circle> held_circle;
-  if (held && packing.share_patch(held->patches, patch)) {
-    const double sure = held->radius * (1 - 1e-9);
-    const auto& tri = packing.domain().triangles()[t];
-    const auto& v = packing.domain().vertices();
-    if (std::all_of(tri.begin(), tri.end(), [&](auto k) { return squared_norm(v[k] - held->center) <= sure * sure; }))
-      return true;
-    held_circle = plane.section(held->center, sure);
-    if (!held_circle) held_circle = Circle{{0, 0}, -1};  // shares the patch, misses the plane
-  } else {
-    held = nullptr;
-  }
-  thread_local std::vector<Ball> balls;
-  balls.clear();
   // Within the region, only circles passing within R of q make vertices there: in the
   // plane, within R' = sqrt(R^2 - h^2) of q's projection, h its height.
   const Vec2 q2 = plane.to_plane(q);
   const double h = plane.height(q), reach2 = std::isfinite(R) ? R * R - h * h : 0;
   const double reach = std::isfinite(R) ? std::sqrt(std::max(reach2, 0.0)) + kRelTol * R : 0;
+  // What lies well inside `held` (by 1e-9 of its radius, past any rounding of the
+  // points made below) needs no look: the triangle's part within R of q (of a small
+  // move's check, the triangles on the side the disk moves to), a circle.
+  std::optional<Circle> held_circle;
+  if (held && packing.share_patch(held->patches, patch)) {
+    held_circle = plane.section(held->center, held->radius * (1 - 1e-9));
+    if (!held_circle) held_circle = Circle{{0, 0}, -1};  // shares the patch, misses the plane
+    if (std::isfinite(R) && part_inside(plane, q2, reach, *held_circle)) return true;
+  } else {
+    held = nullptr;
+  }
+  thread_local std::vector<Ball> balls;
+  balls.clear();
   for (const DiskId j : near) {
     if (!packing.share_patch(packing.patches(j), patch)) continue;  // it covers nothing here
     const Vec3 c = packing.center(j);
