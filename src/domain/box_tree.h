@@ -40,7 +40,8 @@ class BoxTree {
     return best;
   }
 
-  /// f(item) for each item whose box comes within R of p, in no set order.
+  /// f(item) for each item whose box comes within R of p, in no set order (f must not
+  /// query this thread's trees again: the walk keeps its stack in a thread_local).
   template <class F>
   void for_each_within(Vec3 p, double R, F&& f) const {
     if (nodes_.empty()) return;
