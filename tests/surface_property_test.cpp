@@ -98,7 +98,7 @@ TEST(SurfaceVoids, AHoleWhoseVerticesAllLieOnThirdCirclesIsFound) {
 // A small move is checked without listing the moved disk's void: void_points_near_within
 // gives the listing's answer (void_points_near, each point tested against the moved
 // disk) on hundreds of random moves, and the oracle's, which judges the whole packing
-// after the move, on a dozen of them of each answer. Surfaces with features (patches),
+// after the move, on twelve of them per surface, six of each answer. Surfaces with features (patches),
 // an open boundary, steps from 0.05 r to 0.9 r, so both answers come up.
 TEST(SurfaceVoids, AMovedDiskHoldsItsVoidExactlyWhenThePackingStaysMaximal) {
   struct Case {
