@@ -406,5 +406,19 @@ expect devices-twice 0 "^sample: " -- "$bin" sample --radius 0.05 --output /dev/
 expect sweep 0 "\| CVT at the count of eta" -- "$bin" sweep --radius 0.05 --eta 0 0.6 --cvt-iterations 5 --output sweep.md
 grep -q "lloyd_optimize_mesh_2" sweep.md && pass=$((pass + 1)) || { echo "FAIL sweep.md"; fails=$((fails + 1)); }
 
+# rve: fibers at an exact volume fraction, CSV x,y,d; the count from vf, then exact
+expect rve 0 "^rve: 357 fibers \(as asked: 357\), vf 0\.7010, diameter 0\.05, gap 0\.0025, cell 1 x 1, from a sample of [0-9]+, phase [a-z ]+, [0-9.]+ s -> fibers\.csv$" -- "$bin" rve --diameter 0.05 --gap 0.0025 --vf 0.7 --seed 4 -o fibers.csv
+head -n 1 fibers.csv | grep -qx "x,y,d" && [ "$(wc -l < fibers.csv)" = 358 ] && [ "$(cut -d, -f3 fibers.csv | sort -u | head -n 1)" = 0.05 ] &&
+  pass=$((pass + 1)) || { echo "FAIL rve CSV"; fails=$((fails + 1)); }
+expect rve-count 0 "^rve: 200 fibers \(as asked: 200\), vf 0\.[0-9]+, diameter 0\.05, gap 0, cell 2 x 0\.5" -- "$bin" rve -d 0.05 -n 200 --width 2 --height 0.5 -o fibers2.csv
+expect rve-both 2 "--vf excludes --fibers" -- "$bin" rve -d 0.05 --vf 0.5 -n 100 -o never.csv
+expect rve-neither 2 "rve: give a fiber count or a fiber volume fraction$" -- "$bin" rve -d 0.05 -o never.csv
+expect rve-too-dense 2 "rve: 367 fibers \(vf 0\.720[0-9]*\) do not fit: with gap 0\.01 the densest \(hexagonal\) arrangement reaches vf 0\.6[0-9]+; ask for fewer fibers or a smaller gap" -- "$bin" rve -d 0.05 --gap 0.01 --vf 0.72 -o never.csv
+expect rve-too-wide 2 "too wide for the 1 x 1 cell: diameter \+ gap must be under half its smaller side" -- "$bin" rve -d 0.5 --vf 0.3 -o never.csv
+expect rve-bad-gap 2 "gap between fibers must be finite and 0 or more, got -0\.1" -- "$bin" rve -d 0.05 --gap -0.1 --vf 0.3 -o never.csv
+expect rve-no-output 2 "--output is required" -- "$bin" rve -d 0.05 --vf 0.3
+expect rve-memory 2 "^disktune: error: rve: [0-9]+ fibers need about [0-9.]+ GiB but 0\.0977 GiB are allowed; ask for at most about [0-9]+ fibers \(larger fibers or a smaller cell\), or allow more memory \(--max-memory SIZE\)$" -- "$bin" rve -d 0.0005 --vf 0.3 --max-memory 100M -o never.csv
+absent rve-nothing-written never.csv
+
 echo "$pass passed, $fails failed"
 [ "$fails" -eq 0 ]

@@ -56,6 +56,11 @@ void remove_temporary_outputs() noexcept;
 /// shortest form that reads back to the same double.
 void write_points_csv(const std::string& path, const Packing& packing);
 
+/// CSV with header `x,y,d`: fiber i's center and diameter a line (a fiber RVE, rve.h),
+/// numbers as write_points_csv writes them. Throws InvalidInput unless both lists have
+/// the same length.
+void write_fibers_csv(const std::string& path, const std::vector<Vec2>& centers, const std::vector<double>& diameters);
+
 struct PointRecord {
   double x, y, r;
 };

@@ -61,6 +61,7 @@ void add_mesh_command(CLI::App& app, Action& action);
 void add_report_command(CLI::App& app, Action& action);
 void add_sweep_command(CLI::App& app, Action& action);
 void add_remesh_command(CLI::App& app, Action& action);
+void add_rve_command(CLI::App& app, Action& action);
 
 /// One sampling job, as `disktune sample` and the demo run it.
 struct SampleJob {

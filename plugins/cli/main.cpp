@@ -51,6 +51,7 @@ int main(int argc, char** argv) {
   add_report_command(app, action);
   add_sweep_command(app, action);
   add_remesh_command(app, action);
+  add_rve_command(app, action);
 
   try {
     app.parse(argc, argv);

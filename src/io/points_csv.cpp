@@ -92,6 +92,17 @@ void write_points_csv(const std::string& path, const Packing& packing) {
   });
 }
 
+void write_fibers_csv(const std::string& path, const std::vector<Vec2>& centers, const std::vector<double>& diameters) {
+  if (centers.size() != diameters.size()) {
+    throw InvalidInput("write_fibers_csv: " + std::to_string(centers.size()) + " centers but " +
+                       std::to_string(diameters.size()) + " diameters");
+  }
+  write_file_atomically(path, [&](std::ostream& out) {
+    out << "x,y,d\n";
+    for (std::size_t i = 0; i < centers.size(); ++i) detail::put_csv_row(out, {centers[i].x, centers[i].y, diameters[i]});
+  });
+}
+
 std::vector<PointRecord> read_points_csv(const std::string& path) {
   const detail::CsvNumbers rows = detail::read_csv_numbers(path, {"x,y,r"});
   std::vector<PointRecord> out;

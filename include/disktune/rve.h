@@ -1,0 +1,65 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Fiber-composite cross sections (representative volume elements, RVEs): a random
+// periodic arrangement of equal circular fibers at an exact fiber count or volume
+// fraction, the application of the paper's section 8. Fibers of diameter D with a
+// matrix gap of at least g between any two are disks of conflict radius D + g (centers
+// at least that far apart); an MPS of the periodic cell at that radius is tuned to the
+// count by the automatic schedule (the random phases first), so the arrangement is
+// conflict-free and maximal: no room is left for one more fiber.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "disktune/geometry.h"
+#include "disktune/periodic_box.h"
+#include "disktune/tuning.h"
+
+namespace disktune {
+
+struct RveSpec {
+  /// The periodic cell, W x H.
+  double width = 1, height = 1;
+  /// The fibers' diameter D and the least matrix gap g between two fibers (g >= 0).
+  double diameter = 0, gap = 0;
+  /// The fiber count asked for; 0: the count nearest `fiber_fraction`.
+  std::size_t fibers = 0;
+  /// The fiber volume fraction vf = N pi (D/2)^2 / (W H) asked for, when `fibers` is 0.
+  double fiber_fraction = 0;
+  std::uint64_t seed = 1;
+  /// The tuning's schedule, and a progress callback that can cancel.
+  TuneOptions tune;
+  /// The memory the job may use, in bytes; 0: what the process may still allocate.
+  double max_memory = 0;
+};
+
+struct Rve {
+  PeriodicBox cell;
+  double diameter = 0, gap = 0;
+  /// Fiber centers in [0, W) x [0, H); a fiber cut by the cell's edges continues in its
+  /// periodic images.
+  std::vector<Vec2> centers;
+  /// N pi (D/2)^2 / (W H) of the count reached (exactly the one asked for when
+  /// tuning.reached).
+  double fiber_fraction = 0;
+  /// The disks' area fraction at conflict radius D + g (what the tuning counts in).
+  double packing_fraction = 0;
+  std::size_t sample_count = 0;  ///< the MPS's fibers, before tuning
+  TuneResult tuning;
+};
+
+/// The fiber count `spec` asks for. Throws InvalidInput (saying what to change) for a
+/// diameter or gap that is not finite, a non-positive diameter, a negative gap, fibers
+/// (with their gap) too wide for the cell (D + g must be under half its smaller side),
+/// both or neither of a count and a fraction, a fraction outside (0, 1), or a count
+/// above what the hexagonal packing of these fibers holds (vf_max = 0.9069 (D / (D + g))^2).
+std::size_t rve_fiber_count(const RveSpec& spec);
+
+/// Makes the arrangement: an MPS at conflict radius D + g, tuned to rve_fiber_count.
+/// Same spec, same fibers. Where no phase reaches the count (close to the hexagonal
+/// limit) `tuning.reached` is false and the result is the closest arrangement reached,
+/// still conflict-free and maximal.
+Rve make_rve(const RveSpec& spec);
+
+}  // namespace disktune

@@ -1,0 +1,103 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "disktune/rve.h"
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "disktune/density.h"
+#include "disktune/errors.h"
+#include "disktune/resources.h"
+#include "disktune/sampling.h"
+
+namespace disktune {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+// The densest packing of equal disks, hexagonal: pi / (2 sqrt 3).
+const double kHexagonal = kPi / (2 * std::sqrt(3.0));
+
+std::string number(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", x);
+  return text;
+}
+
+// Sizes in memory, to three digits.
+std::string number3(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", x);
+  return text;
+}
+
+double fiber_area(double d) { return kPi * d * d / 4; }
+
+}  // namespace
+
+std::size_t rve_fiber_count(const RveSpec& spec) {
+  const double d = spec.diameter, g = spec.gap;
+  if (!(std::isfinite(d) && d > 0)) throw InvalidInput("rve: the fiber diameter must be finite and positive, got " + number(d));
+  if (!(std::isfinite(g) && g >= 0)) {
+    throw InvalidInput("rve: the gap between fibers must be finite and 0 or more, got " + number(g));
+  }
+  const PeriodicBox cell(spec.width, spec.height);
+  if (!(d + g < 0.5 * std::min(cell.width(), cell.height()))) {
+    throw InvalidInput("rve: fibers of diameter " + number(d) + " with gap " + number(g) +
+                       " are too wide for the " + number(cell.width()) + " x " + number(cell.height()) +
+                       " cell: diameter + gap must be under half its smaller side; make the cell larger or "
+                       "the fibers smaller");
+  }
+  const bool by_count = spec.fibers > 0, by_fraction = spec.fiber_fraction != 0;
+  if (by_count == by_fraction) {
+    throw InvalidInput(by_count ? "rve: give a fiber count or a fiber volume fraction, not both"
+                                : "rve: give a fiber count or a fiber volume fraction");
+  }
+  if (by_fraction && !(spec.fiber_fraction > 0 && spec.fiber_fraction < 1)) {
+    throw InvalidInput("rve: the fiber volume fraction must lie between 0 and 1, got " + number(spec.fiber_fraction));
+  }
+  const double area = cell.area(), one = fiber_area(d);
+  const double wanted = by_count ? static_cast<double>(spec.fibers) : std::round(spec.fiber_fraction * area / one);
+  if (wanted < 1) {
+    throw InvalidInput("rve: a fiber volume fraction of " + number(spec.fiber_fraction) + " is less than half a fiber (" +
+                       number(one / area) + " each) in this cell; ask for more, or make the cell larger");
+  }
+  // The hexagonal packing at center distance D + g holds the most.
+  const double spacing_share = d / (d + g);
+  const double most = kHexagonal * spacing_share * spacing_share;
+  if (wanted * one / area > most) {
+    throw InvalidInput("rve: " + number(wanted) + " fibers (vf " + number(wanted * one / area) +
+                       ") do not fit: with gap " + number(g) + " the densest (hexagonal) arrangement reaches vf " +
+                       number(most) + "; ask for fewer fibers or a smaller gap");
+  }
+  return static_cast<std::size_t>(wanted);
+}
+
+Rve make_rve(const RveSpec& spec) {
+  const std::size_t count = rve_fiber_count(spec);
+  Rve out;
+  out.cell = PeriodicBox(spec.width, spec.height);
+  out.diameter = spec.diameter;
+  out.gap = spec.gap;
+  const double r = spec.diameter + spec.gap;  // centers at least this far apart
+  const ResourceEstimate need = estimate_resources(out.cell, r).tuned_to(static_cast<double>(count));
+  const double limit = spec.max_memory > 0 ? spec.max_memory : available_memory();
+  if (need.bytes > limit) {  // in fibers, not in the radius the packing counts in
+    const double fits = std::floor(0.9 * static_cast<double>(count) * limit / need.bytes);
+    throw InvalidInput("rve: " + std::to_string(count) + " fibers need about " + number3(need.bytes / 1073741824.0) +
+                           " GiB but " + number3(limit / 1073741824.0) + " GiB are allowed; ask for at most about " +
+                           std::to_string(static_cast<std::size_t>(fits)) + " fibers (larger fibers or a smaller cell), or allow more memory",
+                       InvalidInput::Remedy::memory);
+  }
+  check_resources(need, limit);
+  Rng rng(spec.seed);
+  Packing packing = sample_mps(out.cell, r, rng);
+  out.sample_count = packing.size();
+  out.tuning = tune(packing, out.cell, Target::count(count), rng, spec.tune);
+  out.centers.reserve(packing.size());
+  for (const DiskId id : packing.ids()) out.centers.push_back(packing.center(id));
+  out.fiber_fraction = static_cast<double>(packing.size()) * fiber_area(spec.diameter) / out.cell.area();
+  out.packing_fraction = area_fraction(packing.size(), r, out.cell.area());
+  return out;
+}
+
+}  // namespace disktune
