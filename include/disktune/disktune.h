@@ -22,6 +22,7 @@
 #include "disktune/quality_json.h"
 #include "disktune/random.h"
 #include "disktune/remesh.h"
+#include "disktune/fiber_statistics.h"
 #include "disktune/rve.h"
 #include "disktune/report_pictures.h"
 #include "disktune/resources.h"

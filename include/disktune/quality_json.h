@@ -5,6 +5,9 @@
 
 #include <string>
 
+#include <cstdint>
+
+#include "disktune/fiber_statistics.h"
 #include "disktune/quality.h"
 #include "disktune/spectrum.h"
 
@@ -28,5 +31,17 @@ void write_quality_json(const std::string& path, const PlanarQualityReport& repo
 /// hausdorff, angles, edges, local_beta} with the keys of the torus report.
 std::string quality_json(const SurfaceMeshQuality& quality);
 void write_quality_json(const std::string& path, const SurfaceMeshQuality& quality);
+
+/// A fiber arrangement's statistics (docs/rve.md): `rve` {fibers, width, height,
+/// diameter, gap, fiber_fraction, seed}, `statistics` (the fields of FiberStatistics),
+/// `rsa` (the same for `sample`, the maximal sample the arrangement was tuned from:
+/// random sequential adsorption to saturation, of the same fibers; omitted when null),
+/// `csr` (complete spatial randomness at the same intensity: the k-th neighbour's mean
+/// distance, K = pi r^2, L = r, g = 1, the Voronoi area CV) and `hexagonal` (the lattice
+/// of the same count: all six neighbours at its spacing, psi6 1, CV 0).
+std::string fiber_statistics_json(const FiberStatistics& fibers, const FiberStatistics* sample, double gap,
+                                  std::uint64_t seed);
+void write_fiber_statistics_json(const std::string& path, const FiberStatistics& fibers, const FiberStatistics* sample,
+                                 double gap, std::uint64_t seed);
 
 }  // namespace disktune

@@ -45,7 +45,9 @@ struct Rve {
   double fiber_fraction = 0;
   /// The disks' area fraction at conflict radius D + g (what the tuning counts in).
   double packing_fraction = 0;
-  std::size_t sample_count = 0;  ///< the MPS's fibers, before tuning
+  /// The maximal sample's fiber centers, before tuning: random sequential adsorption of
+  /// the same fibers to saturation, the reference the statistics compare with.
+  std::vector<Vec2> sample_centers;
   TuneResult tuning;
 };
 

@@ -9,7 +9,9 @@
 
 #include "commands.h"
 #include "disktune/errors.h"
+#include "disktune/fiber_statistics.h"
 #include "disktune/io.h"
+#include "disktune/quality_json.h"
 #include "disktune/rve.h"
 
 namespace disktune::cli {
@@ -17,12 +19,13 @@ namespace {
 
 struct RveJob {
   RveSpec spec;
-  std::string output;
+  std::string output, stats;
 };
 
 int run_rve(const RveJob& job) {
-  check_files_apart({}, {{"--output", job.output}});
+  check_files_apart({}, {{"--output", job.output}, {"--stats", job.stats}});
   check_output_folder(job.output);
+  check_output_folder(job.stats);
   const std::size_t count = rve_fiber_count(job.spec);  // fail before any work
   const auto t0 = std::chrono::steady_clock::now();
   Rve rve;
@@ -41,10 +44,19 @@ int run_rve(const RveJob& job) {
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   write_fibers_csv(job.output, rve.centers, std::vector<double>(rve.centers.size(), rve.diameter));
+  if (!job.stats.empty()) {
+    const FiberStatistics fibers = fiber_statistics(rve.cell, rve.centers, rve.diameter);
+    if (rve.sample_centers.size() >= 7) {
+      const FiberStatistics sample = fiber_statistics(rve.cell, rve.sample_centers, rve.diameter);
+      write_fiber_statistics_json(job.stats, fibers, &sample, rve.gap, job.spec.seed);
+    } else {
+      write_fiber_statistics_json(job.stats, fibers, nullptr, rve.gap, job.spec.seed);
+    }
+  }
   std::printf("rve: %zu fibers (%s%zu), vf %.4f, diameter %g, gap %g, cell %g x %g, from a sample of %zu, "
               "phase %s, %.3f s -> %s\n",
               rve.centers.size(), rve.tuning.reached ? "as asked: " : "NOT reached, asked ", count,
-              rve.fiber_fraction, rve.diameter, rve.gap, rve.cell.width(), rve.cell.height(), rve.sample_count,
+              rve.fiber_fraction, rve.diameter, rve.gap, rve.cell.width(), rve.cell.height(), rve.sample_centers.size(),
               to_string(rve.tuning.last_phase).c_str(), seconds, job.output.c_str());
   if (!rve.tuning.reached) {
     std::fprintf(stderr,
@@ -78,6 +90,11 @@ void add_rve_command(CLI::App& app, Action& action) {
   cmd->add_option("--width", job->spec.width, "Width W of the periodic cell")->capture_default_str();
   cmd->add_option("--height", job->spec.height, "Height H of the periodic cell")->capture_default_str();
   cmd->add_option("--output,-o", job->output, "CSV file to write (header x,y,d)")->required();
+  cmd->add_option("--stats", job->stats,
+                  "Also write the arrangement's statistics as JSON: nearest-neighbour distances (1st to "
+                  "6th) and orientation, Ripley's K and L, g(r), psi6, Voronoi cell areas; beside them the "
+                  "same for the maximal sample it was tuned from (random sequential adsorption), complete "
+                  "spatial randomness and the hexagonal lattice");
   add_seed_option(cmd, job->spec.seed);
   add_memory_option(cmd, job->spec.max_memory);
   cmd->callback([job, &action] { action = [job] { return run_rve(*job); }; });

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "disktune/quality_json.h"
 
+#include <cmath>
+
 #include <nlohmann/json.hpp>
 
 #include "disktune/io.h"
@@ -121,6 +123,56 @@ std::string quality_json(const SurfaceMeshQuality& q) {
 
 void write_quality_json(const std::string& path, const SurfaceMeshQuality& quality) {
   write_text(path, quality_json(quality));
+}
+
+namespace {
+
+json to_json(const FiberStatistics& s) {
+  json nearest = json::array(), histograms = json::array();
+  for (int k = 0; k < 6; ++k) nearest.push_back(to_json(s.nearest[k])), histograms.push_back(to_json(s.nearest_histogram[k]));
+  return {{"fibers", s.count},
+          {"fiber_fraction", s.fiber_fraction},
+          {"nearest_over_d", nearest},
+          {"nearest_histograms", histograms},
+          {"nearest_orientation_degrees", to_json(s.nearest_orientation)},
+          {"r_over_d", s.r},
+          {"ripley_k_over_d2", s.ripley_k},
+          {"ripley_l_over_d", s.ripley_l},
+          {"pair_correlation", s.pair_correlation},
+          {"psi6_global", s.psi6_global},
+          {"psi6_local_mean", s.psi6_local_mean},
+          {"psi6_hexagonal_share", s.psi6_hexagonal_share},
+          {"psi6_local_histogram", to_json(s.psi6_local)},
+          {"voronoi_area_cv", s.voronoi_area_cv}};
+}
+
+}  // namespace
+
+std::string fiber_statistics_json(const FiberStatistics& fibers, const FiberStatistics* sample, double gap,
+                                  std::uint64_t seed) {
+  constexpr double kPi = 3.14159265358979323846;
+  const double area = fibers.width * fibers.height, n = static_cast<double>(fibers.count), d = fibers.diameter;
+  json csr_nearest = json::array();
+  for (int k = 1; k <= 6; ++k) csr_nearest.push_back(poisson_nearest_mean(k, n / area) / d);
+  json csr_k = json::array();
+  for (const double r : fibers.r) csr_k.push_back(kPi * r * r);
+  const double lattice_spacing = std::sqrt(2 * area / (std::sqrt(3.0) * n));
+  json out;
+  out["rve"] = {{"fibers", fibers.count}, {"width", fibers.width},  {"height", fibers.height},
+                {"diameter", d},          {"gap", gap},             {"fiber_fraction", fibers.fiber_fraction},
+                {"seed", seed}};
+  out["statistics"] = to_json(fibers);
+  if (sample) out["rsa"] = to_json(*sample);
+  out["csr"] = {{"nearest_mean_over_d", csr_nearest}, {"ripley_k_over_d2", csr_k}, {"ripley_l_over_d", fibers.r},
+                {"pair_correlation", 1}, {"voronoi_area_cv", kPoissonVoronoiAreaCv}};
+  out["hexagonal"] = {{"nearest_over_d", lattice_spacing / d}, {"psi6_global", 1}, {"psi6_local_mean", 1},
+                      {"voronoi_area_cv", 0}};
+  return out.dump(2) + "\n";
+}
+
+void write_fiber_statistics_json(const std::string& path, const FiberStatistics& fibers, const FiberStatistics* sample,
+                                 double gap, std::uint64_t seed) {
+  write_text(path, fiber_statistics_json(fibers, sample, gap, seed));
 }
 
 }  // namespace disktune

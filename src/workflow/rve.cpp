@@ -91,7 +91,7 @@ Rve make_rve(const RveSpec& spec) {
   check_resources(need, limit);
   Rng rng(spec.seed);
   Packing packing = sample_mps(out.cell, r, rng);
-  out.sample_count = packing.size();
+  for (const DiskId id : packing.ids()) out.sample_centers.push_back(packing.center(id));
   out.tuning = tune(packing, out.cell, Target::count(count), rng, spec.tune);
   out.centers.reserve(packing.size());
   for (const DiskId id : packing.ids()) out.centers.push_back(packing.center(id));

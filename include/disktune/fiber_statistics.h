@@ -1,0 +1,59 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The statistics composite modellers check on a fiber arrangement in a periodic cell
+// (rve.h), every distance taken to the nearest periodic image and measured in fiber
+// diameters D: nearest-neighbour distances (1st to 6th) and the nearest bond's
+// orientation, Ripley's K and L and the pair correlation g(r), the bond-orientational
+// order psi6, and the Voronoi cells' area spread; with the values of complete spatial
+// randomness (a Poisson process of the same intensity) and of the hexagonal lattice of
+// the same count beside them.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+#include "disktune/geometry.h"
+#include "disktune/periodic_box.h"
+#include "disktune/quality.h"
+
+namespace disktune {
+
+struct FiberStatistics {
+  std::size_t count = 0;
+  double width = 0, height = 0, diameter = 0;
+  double fiber_fraction = 0;  ///< N pi (D/2)^2 / (W H)
+  /// The k-th nearest neighbour's distance over D (k = 1..6 at [0..5]), and their
+  /// histograms (bins of 0.02 over [0, 4)).
+  std::array<Statistics, 6> nearest;
+  std::array<Histogram, 6> nearest_histogram;
+  /// The direction of each fiber's bond to its nearest neighbour, in degrees over
+  /// [0, 180) (a bond has no sense), bins of 10 degrees.
+  Histogram nearest_orientation;
+  /// At r_i = (i + 1) dr, in units of D, up to the smaller of 5 D and half the cell's
+  /// smaller side: Ripley's K(r) = W H / (N (N - 1)) times the ordered pairs at most r
+  /// apart, over D^2; L(r) = sqrt(K / pi); and g(r), the pairs in the ring (r - dr, r]
+  /// over those a Poisson process would put there.
+  double dr = 0.05;
+  std::vector<double> r, ripley_k, ripley_l, pair_correlation;
+  /// Local psi6 of a fiber: (1/6) sum of exp(6 i theta) over the bonds to its six nearest
+  /// neighbours. Global: the modulus of their mean (1 for the lattice, about 1/sqrt(N)
+  /// without a common orientation); then the mean modulus, the share above 0.9 (locally
+  /// hexagonal), and the moduli's histogram (bins of 0.05 over [0, 1]).
+  double psi6_global = 0, psi6_local_mean = 0, psi6_hexagonal_share = 0;
+  Histogram psi6_local;
+  /// The Voronoi cells' areas (periodic): standard deviation over mean.
+  double voronoi_area_cv = 0;
+};
+
+/// Throws InvalidInput for fewer than 7 fibers, a diameter that is not positive, or two
+/// coinciding centers. The centers are wrapped into the cell.
+FiberStatistics fiber_statistics(const PeriodicBox& cell, const std::vector<Vec2>& centers, double diameter);
+
+/// Complete spatial randomness at `intensity` points per unit area: the mean distance
+/// to the k-th nearest point, Gamma(k + 1/2) / ((k - 1)! sqrt(pi intensity)).
+double poisson_nearest_mean(int k, double intensity);
+/// The area coefficient of variation of Poisson-Voronoi cells in the plane (sqrt of the
+/// normalised area variance 0.280, a known numerical constant).
+constexpr double kPoissonVoronoiAreaCv = 0.529;
+
+}  // namespace disktune

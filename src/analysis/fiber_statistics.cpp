@@ -1,0 +1,155 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "disktune/fiber_statistics.h"
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <string>
+#include <utility>
+
+#include "disktune/errors.h"
+#include "disktune/mesh.h"
+#include "disktune/packing.h"
+
+namespace disktune {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+Histogram empty_histogram(double lo, double width, std::size_t bins) {
+  Histogram h;
+  h.lo = lo, h.bin_width = width, h.counts.assign(bins, 0);
+  return h;
+}
+
+void add(Histogram& h, double x) {
+  const double at = (x - h.lo) / h.bin_width;
+  if (at >= 0 && at < static_cast<double>(h.counts.size())) {
+    ++h.counts[static_cast<std::size_t>(at)];
+  } else {
+    ++h.overflow;
+  }
+}
+
+Statistics statistics_of(const std::vector<double>& values) {
+  Statistics s;
+  s.min = *std::min_element(values.begin(), values.end());
+  s.max = *std::max_element(values.begin(), values.end());
+  double sum = 0, sum2 = 0;
+  for (const double v : values) sum += v;
+  s.mean = sum / static_cast<double>(values.size());
+  for (const double v : values) sum2 += (v - s.mean) * (v - s.mean);
+  s.stddev = std::sqrt(sum2 / static_cast<double>(values.size()));
+  return s;
+}
+
+// Each Voronoi cell's area from the periodic Delaunay triangulation: a triangle gives
+// each corner the signed areas of the two triangles (corner, edge midpoint,
+// circumcenter), which sum to the cell (obtuse triangles give negative parts).
+std::vector<double> voronoi_areas(const Packing& packing) {
+  const TriangleMesh mesh = periodic_delaunay(packing);
+  std::vector<double> area(mesh.disk_count, 0.0);
+  for (const auto& t : mesh.triangles) {
+    const Vec2 a = mesh.vertices[t[0]], b = mesh.vertices[t[1]], c = mesh.vertices[t[2]];
+    const Vec2 ab = b - a, ac = c - a;
+    const double d = 2 * cross(ab, ac);
+    const Vec2 o = a + Vec2{ac.y * dot(ab, ab) - ab.y * dot(ac, ac), ab.x * dot(ac, ac) - ac.x * dot(ab, ab)} * (1 / d);
+    for (int k = 0; k < 3; ++k) {
+      const Vec2 p = mesh.vertices[t[k]], q = mesh.vertices[t[(k + 1) % 3]], s = mesh.vertices[t[(k + 2) % 3]];
+      const Vec2 to_q = (q - p) * 0.5, to_s = (s - p) * 0.5, to_o = o - p;
+      area[mesh.vertex_disk[t[k]]] += 0.5 * (cross(to_q, to_o) + cross(to_o, to_s));
+    }
+  }
+  return area;
+}
+
+}  // namespace
+
+double poisson_nearest_mean(int k, double intensity) {
+  double factorial = 1;
+  for (int i = 2; i < k; ++i) factorial *= i;
+  return std::tgamma(k + 0.5) / (factorial * std::sqrt(kPi * intensity));
+}
+
+FiberStatistics fiber_statistics(const PeriodicBox& cell, const std::vector<Vec2>& centers, double diameter) {
+  if (centers.size() < 7) {
+    throw InvalidInput("fiber statistics need at least 7 fibers (six neighbours each), got " +
+                       std::to_string(centers.size()));
+  }
+  if (!(diameter > 0 && std::isfinite(diameter))) throw InvalidInput("fiber statistics: the diameter must be positive");
+  FiberStatistics s;
+  const std::size_t n = centers.size();
+  const double w = cell.width(), h = cell.height(), area = cell.area();
+  s.count = n, s.width = w, s.height = h, s.diameter = diameter;
+  s.fiber_fraction = static_cast<double>(n) * kPi * diameter * diameter / 4 / area;
+
+  // The pairs up to r_max for K and g; six neighbours may lie farther (sparse cells).
+  const double r_max = std::min(5 * diameter, 0.5 * std::min(w, h) * (1 - 1e-9));
+  const auto rings = static_cast<std::size_t>(std::floor(r_max / (s.dr * diameter) + 1e-9));
+  const double spacing = std::sqrt(area / static_cast<double>(n));
+  Packing index(cell.frame(), std::max(r_max, 3 * spacing));
+  for (const Vec2 c : centers) index.insert(cell.wrap(c), diameter / 2);
+
+  std::vector<double> pairs(rings, 0.0);
+  std::array<std::vector<double>, 6> nearest;
+  for (int k = 0; k < 6; ++k) s.nearest_histogram[k] = empty_histogram(0, 0.02, 200);
+  s.nearest_orientation = empty_histogram(0, 10, 18);
+  s.psi6_local = empty_histogram(0, 0.05, 21);  // the last bin holds 1 exactly
+  std::complex<double> psi6_sum = 0;
+  std::size_t hexagonal = 0;
+  std::vector<std::pair<double, Vec2>> near;  // squared distance, bond
+  for (DiskId i = 0; i < n; ++i) {
+    const Vec2 c = index.center(i);
+    near.clear();
+    for (double reach = 3 * spacing;; reach *= 2) {
+      near.clear();
+      index.for_each_near(c, std::max(reach, r_max), [&](const Neighbor& q) {
+        if (q.d2 > 0) near.push_back({q.d2, q.image - c});
+        else if (q.id != i) throw InvalidInput("fiber statistics: two fibers at one center");
+      });
+      if (near.size() >= 6 || reach > 2 * std::max(w, h)) break;
+    }
+    std::sort(near.begin(), near.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::complex<double> local = 0;
+    for (int k = 0; k < 6; ++k) {
+      const double d = std::sqrt(near[k].first) / diameter;
+      nearest[k].push_back(d);
+      add(s.nearest_histogram[k], d);
+      local += std::polar(1.0, 6 * std::atan2(near[k].second.y, near[k].second.x));
+    }
+    local /= 6.0;
+    psi6_sum += local;
+    s.psi6_local_mean += std::abs(local);
+    hexagonal += std::abs(local) > 0.9;
+    add(s.psi6_local, std::abs(local));
+    double angle = std::atan2(near[0].second.y, near[0].second.x) * 180 / kPi;
+    if (angle < 0) angle += 180;
+    add(s.nearest_orientation, angle >= 180 ? 0 : angle);
+    for (const auto& [d2, bond] : near) {
+      // d in ((ring - 1) dr, ring dr], a pair at r (to 1e-9) counted at r: fibers placed
+      // at the gap's distance exactly are many (void corners), and within r.
+      const double ring = std::ceil(std::sqrt(d2) / diameter / s.dr * (1 - 1e-9));
+      if (ring >= 1 && ring <= static_cast<double>(rings)) pairs[static_cast<std::size_t>(ring) - 1] += 1;
+    }
+  }
+  for (int k = 0; k < 6; ++k) s.nearest[k] = statistics_of(nearest[k]);
+  s.psi6_global = std::abs(psi6_sum) / static_cast<double>(n);
+  s.psi6_local_mean /= static_cast<double>(n);
+  s.psi6_hexagonal_share = static_cast<double>(hexagonal) / static_cast<double>(n);
+
+  const double per_pair = area / (static_cast<double>(n) * static_cast<double>(n - 1));
+  double within = 0;
+  for (std::size_t i = 0; i < rings; ++i) {
+    const double r = static_cast<double>(i + 1) * s.dr, r_in = static_cast<double>(i) * s.dr;
+    within += pairs[i];
+    s.r.push_back(r);
+    s.ripley_k.push_back(per_pair * within / (diameter * diameter));
+    s.ripley_l.push_back(std::sqrt(s.ripley_k.back() / kPi));
+    s.pair_correlation.push_back(per_pair * pairs[i] / (kPi * (r * r - r_in * r_in) * diameter * diameter));
+  }
+  const Statistics cells = statistics_of(voronoi_areas(index));
+  s.voronoi_area_cv = cells.stddev / cells.mean;
+  return s;
+}
+
+}  // namespace disktune

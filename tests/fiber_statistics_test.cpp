@@ -1,0 +1,130 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Fiber statistics (fiber_statistics.h) against what the test derives itself: the
+// hexagonal lattice's exact values, a brute-force count over all pairs of an RVE (the
+// minimum image), and complete spatial randomness's analytic values for Poisson points.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <random>
+#include <vector>
+
+#include "disktune/errors.h"
+#include "disktune/fiber_statistics.h"
+#include "disktune/rve.h"
+
+namespace disktune {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+TEST(FiberStatistics, HexagonalLatticeHasItsExactValues) {
+  const int side = 20;
+  const double a = 1.0 / side, row = a * std::sqrt(3.0) / 2, d = 0.045;  // a / d = 1.111, inside a ring
+  const PeriodicBox cell(1, side * row);
+  std::vector<Vec2> centers;
+  for (int j = 0; j < side; ++j)
+    for (int i = 0; i < side; ++i) centers.push_back({(i + 0.5 * (j % 2)) * a, j * row});
+  const FiberStatistics s = fiber_statistics(cell, centers, d);
+  for (int k = 0; k < 6; ++k) {
+    EXPECT_NEAR(s.nearest[k].mean, a / d, 1e-9) << "k " << k + 1;
+    EXPECT_NEAR(s.nearest[k].stddev, 0, 1e-9) << "k " << k + 1;
+  }
+  EXPECT_NEAR(s.psi6_global, 1, 1e-9);
+  EXPECT_NEAR(s.psi6_local_mean, 1, 1e-9);
+  EXPECT_DOUBLE_EQ(s.psi6_hexagonal_share, 1);
+  EXPECT_NEAR(s.voronoi_area_cv, 0, 1e-6);
+  // Six neighbours at a, six more at sqrt(3) a: K steps from 0 to 6 A / (N - 1), then 12.
+  const double n = centers.size(), step = cell.area() / (n - 1) / (d * d);
+  for (std::size_t i = 0; i < s.r.size(); ++i) {
+    const double want = s.r[i] < a / d ? 0 : s.r[i] < std::sqrt(3.0) * a / d ? 6 * step : s.r[i] < 2 * a / d ? 12 * step : -1;
+    if (want >= 0) {
+      EXPECT_NEAR(s.ripley_k[i], want, 1e-9 * step) << "r " << s.r[i];
+    }
+  }
+  // The bonds point at 0, 60 and 120 degrees (any of six tied bonds is the nearest, to
+  // rounding): only the bins on either side of those angles (and of 180) are used.
+  for (std::size_t bin = 0; bin < 18; ++bin) {
+    if (bin % 6 != 0 && bin % 6 != 5) {
+      EXPECT_EQ(s.nearest_orientation.counts[bin], 0u) << "bin " << bin;
+    }
+  }
+}
+
+TEST(FiberStatistics, AgreesWithAllPairsOnAnRve) {
+  RveSpec spec;
+  spec.diameter = 0.04, spec.gap = 0.004, spec.fiber_fraction = 0.6, spec.seed = 5;
+  const Rve rve = make_rve(spec);
+  const FiberStatistics s = fiber_statistics(rve.cell, rve.centers, rve.diameter);
+  const std::size_t n = rve.centers.size();
+  ASSERT_GT(n, 300u);
+  // All pairs, minimum image (the cell is 25 D wide: the six nearest and 5 D lie within half of it).
+  std::vector<std::vector<double>> dist(n);
+  std::complex<double> psi6 = 0;
+  std::vector<double> within(s.r.size(), 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    std::vector<std::pair<double, double>> all;
+    for (std::size_t j = 0; j < n; ++j) {
+      if (j == i) continue;
+      double dx = rve.centers[j].x - rve.centers[i].x, dy = rve.centers[j].y - rve.centers[i].y;
+      dx -= std::round(dx), dy -= std::round(dy);
+      const double dd = std::hypot(dx, dy) / rve.diameter;
+      all.push_back({dd, std::atan2(dy, dx)});
+      for (std::size_t k = 0; k < s.r.size(); ++k) within[k] += dd <= s.r[k] * (1 + 1e-9);  // contacts count
+    }
+    std::sort(all.begin(), all.end());
+    std::complex<double> local = 0;
+    for (int k = 0; k < 6; ++k) dist[k].push_back(all[k].first), local += std::polar(1.0, 6 * all[k].second);
+    psi6 += local / 6.0;
+  }
+  for (int k = 0; k < 6; ++k) {
+    double mean = 0;
+    for (const double v : dist[k]) mean += v;
+    EXPECT_NEAR(s.nearest[k].mean, mean / n, 1e-12) << "k " << k + 1;
+    EXPECT_NEAR(s.nearest[k].min, *std::min_element(dist[k].begin(), dist[k].end()), 1e-12);
+  }
+  EXPECT_NEAR(s.psi6_global, std::abs(psi6) / n, 1e-12);
+  for (std::size_t k = 0; k < s.r.size(); ++k) {
+    const double k_want = within[k] / (double(n) * double(n - 1)) / (rve.diameter * rve.diameter);
+    EXPECT_NEAR(s.ripley_k[k], k_want, 1e-9 * (1 + k_want)) << "r " << s.r[k];
+  }
+  // No fiber closer than D + g: K and g vanish below 1.1 D.
+  for (std::size_t k = 0; k < s.r.size() && s.r[k] < 1.1 - 1e-9; ++k) EXPECT_EQ(s.pair_correlation[k], 0);
+  EXPECT_NEAR(s.fiber_fraction, n * kPi * 0.04 * 0.04 / 4, 1e-12);
+}
+
+TEST(FiberStatistics, PoissonPointsMatchCompleteSpatialRandomness) {
+  for (const unsigned seed : {1u, 2u, 3u}) {
+    std::mt19937_64 gen(seed);
+    std::uniform_real_distribution<double> u(0, 1);
+    const std::size_t n = 4000;
+    std::vector<Vec2> points;
+    for (std::size_t i = 0; i < n; ++i) points.push_back({u(gen), u(gen)});
+    const double d = 1 / std::sqrt(double(n));  // a unit near the spacing
+    const FiberStatistics s = fiber_statistics(PeriodicBox(1, 1), points, d);
+    for (int k = 1; k <= 6; ++k)
+      EXPECT_NEAR(s.nearest[k - 1].mean * d / poisson_nearest_mean(k, double(n)), 1, 0.04) << "k " << k << " seed " << seed;
+    for (std::size_t i = 0; i < s.r.size(); ++i) {
+      if (s.r[i] < 1.5) continue;  // few pairs: noisy
+      EXPECT_NEAR(s.ripley_k[i] / (kPi * s.r[i] * s.r[i]), 1, 0.06) << "r " << s.r[i] << " seed " << seed;
+      EXPECT_NEAR(s.ripley_l[i] / s.r[i], 1, 0.03);
+    }
+    EXPECT_NEAR(s.voronoi_area_cv, kPoissonVoronoiAreaCv, 0.03) << "seed " << seed;
+    EXPECT_LT(s.psi6_global, 0.05);
+  }
+}
+
+TEST(FiberStatistics, RefusesTooFewAndCoincidingFibers) {
+  std::vector<Vec2> few(6, Vec2{0.1, 0.1});
+  EXPECT_THROW(fiber_statistics(PeriodicBox(1, 1), few, 0.01), InvalidInput);
+  std::vector<Vec2> twice;
+  for (int i = 0; i < 10; ++i) twice.push_back({0.1 * i, 0.05 * i});
+  twice.push_back(twice[3]);
+  EXPECT_THROW(fiber_statistics(PeriodicBox(1, 1), twice, 0.01), InvalidInput);
+  twice.pop_back();
+  EXPECT_THROW(fiber_statistics(PeriodicBox(1, 1), twice, 0), InvalidInput);
+}
+
+}  // namespace
+}  // namespace disktune
