@@ -115,6 +115,51 @@ TEST(FiberStatistics, PoissonPointsMatchCompleteSpatialRandomness) {
   }
 }
 
+TEST(FiberStatistics, LocalFractionAgreesWithCountingPoints) {
+  RveSpec spec;
+  spec.diameter = 0.05, spec.gap = 0.0025, spec.fiber_fraction = 0.65, spec.seed = 3;
+  const Rve rve = make_rve(spec);
+  const FiberStatistics s = fiber_statistics(rve.cell, rve.centers, rve.diameter);
+  // Windows 2, 4, 8 and 16 D: 10, 5, 2 and 1 a side (the last two leave a strip).
+  ASSERT_EQ(s.local_fraction.size(), 4u);
+  EXPECT_EQ(s.local_fraction[0].windows, 100u);
+  EXPECT_EQ(s.local_fraction[1].windows, 25u);
+  EXPECT_EQ(s.local_fraction[3].windows, 1u);
+  // 10 x 10 and 5 x 5 windows tile the cell: the fiber area is all counted, once.
+  EXPECT_NEAR(s.local_fraction[0].fraction.mean, s.fiber_fraction, 1e-12);
+  EXPECT_NEAR(s.local_fraction[1].fraction.mean, s.fiber_fraction, 1e-12);
+  // Each 4 D window (0.2 wide) by counting points of a 1000 x 1000 grid inside a fiber.
+  const int grid = 1000;
+  std::vector<double> inside(25, 0);
+  const double r2 = 0.025 * 0.025;
+  std::vector<std::vector<Vec2>> bucket(20 * 20);  // buckets one diameter wide
+  for (const Vec2 c : rve.centers) bucket[int(c.y * 20) * 20 + int(c.x * 20)].push_back(c);
+  for (int j = 0; j < grid; ++j) {
+    for (int i = 0; i < grid; ++i) {
+      const double x = (i + 0.5) / grid, y = (j + 0.5) / grid;
+      bool in = false;
+      for (int by = -1; by <= 1 && !in; ++by) {
+        for (int bx = -1; bx <= 1 && !in; ++bx) {
+          for (const Vec2 c : bucket[((int(y * 20) + by + 20) % 20) * 20 + (int(x * 20) + bx + 20) % 20]) {
+            double dx = x - c.x, dy = y - c.y;
+            dx -= std::round(dx), dy -= std::round(dy);
+            in = in || dx * dx + dy * dy < r2;
+          }
+        }
+      }
+      inside[(j / 200) * 5 + i / 200] += in;
+    }
+  }
+  std::vector<double> counted;
+  for (const double c : inside) counted.push_back(c / (200.0 * 200.0));
+  double mean = 0, var = 0;
+  for (const double c : counted) mean += c / 25;
+  for (const double c : counted) var += (c - mean) * (c - mean) / 25;
+  EXPECT_NEAR(s.local_fraction[1].fraction.stddev, std::sqrt(var), 2e-3);
+  EXPECT_NEAR(s.local_fraction[1].fraction.min, *std::min_element(counted.begin(), counted.end()), 3e-3);
+  EXPECT_NEAR(s.local_fraction[1].fraction.max, *std::max_element(counted.begin(), counted.end()), 3e-3);
+}
+
 TEST(FiberStatistics, RefusesTooFewAndCoincidingFibers) {
   std::vector<Vec2> few(6, Vec2{0.1, 0.1});
   EXPECT_THROW(fiber_statistics(PeriodicBox(1, 1), few, 0.01), InvalidInput);

@@ -3,7 +3,7 @@
 // (rve.h), every distance taken to the nearest periodic image and measured in fiber
 // diameters D: nearest-neighbour distances (1st to 6th) and the nearest bond's
 // orientation, Ripley's K and L and the pair correlation g(r), the bond-orientational
-// order psi6, and the Voronoi cells' area spread; with the values of complete spatial
+// order psi6, the Voronoi cells' area spread and the fiber fraction over windows; with the values of complete spatial
 // randomness (a Poisson process of the same intensity) and of the hexagonal lattice of
 // the same count beside them.
 #pragma once
@@ -43,6 +43,16 @@ struct FiberStatistics {
   Histogram psi6_local;
   /// The Voronoi cells' areas (periodic): standard deviation over mean.
   double voronoi_area_cv = 0;
+  /// The local fiber fraction: square windows `side` D wide (2, 4, 8, 16, as many as fit
+  /// the cell) laid edge to edge from the cell's corner, each the exact area of the
+  /// fibers (and their periodic images) inside it over its own; their count, mean and
+  /// spread. Where the windows tile the cell, the mean is the fiber fraction exactly.
+  struct LocalFraction {
+    double side = 0;
+    std::size_t windows = 0;
+    Statistics fraction;
+  };
+  std::vector<LocalFraction> local_fraction;
 };
 
 /// Throws InvalidInput for fewer than 7 fibers, a diameter that is not positive, or two

@@ -34,7 +34,7 @@ void write_quality_json(const std::string& path, const SurfaceMeshQuality& quali
 
 /// A fiber arrangement's statistics (docs/rve.md): `rve` {fibers, width, height,
 /// diameter, gap, fiber_fraction, seed}, `statistics` (the fields of FiberStatistics),
-/// `rsa` (the same for `sample`, the maximal sample the arrangement was tuned from:
+/// `local_fraction` [{side_over_d, windows, fraction}] among them; `rsa` (the same for `sample`, the maximal sample the arrangement was tuned from:
 /// random sequential adsorption to saturation, of the same fibers; omitted when null),
 /// `csr` (complete spatial randomness at the same intensity: the k-th neighbour's mean
 /// distance, K = pi r^2, L = r, g = 1, the Voronoi area CV) and `hexagonal` (the lattice

@@ -63,6 +63,61 @@ std::vector<double> voronoi_areas(const Packing& packing) {
   return area;
 }
 
+// The signed area of the disk of radius R about the origin inside the triangle (origin,
+// a, b): along ab, the parts inside the circle add their triangles, the parts outside
+// their circular sectors.
+double disk_in_triangle(Vec2 a, Vec2 b, double R) {
+  const Vec2 e = b - a;
+  const double A = dot(e, e), B = dot(a, e), C = dot(a, a) - R * R, disc = B * B - A * C;
+  Vec2 points[4] = {a, a, a, a};
+  int n = 1;
+  if (A > 0 && disc > 0) {
+    for (const double t : {(-B - std::sqrt(disc)) / A, (-B + std::sqrt(disc)) / A})
+      if (t > 0 && t < 1) points[n++] = a + e * t;
+  }
+  points[n++] = b;
+  double area = 0;
+  for (int k = 0; k + 1 < n; ++k) {
+    const Vec2 u = points[k], v = points[k + 1], mid = (u + v) * 0.5;
+    area += dot(mid, mid) <= R * R ? 0.5 * cross(u, v) : 0.5 * R * R * std::atan2(cross(u, v), dot(u, v));
+  }
+  return area;
+}
+
+// The area of the disk (c, R) inside the axis-aligned square [lo, lo + side]^2.
+double disk_in_square(Vec2 c, double R, Vec2 lo, double side) {
+  const Vec2 corners[4] = {lo - c, Vec2{lo.x + side, lo.y} - c, Vec2{lo.x + side, lo.y + side} - c,
+                           Vec2{lo.x, lo.y + side} - c};
+  double area = 0;
+  for (int k = 0; k < 4; ++k) area += disk_in_triangle(corners[k], corners[(k + 1) % 4], R);
+  return area;
+}
+
+std::vector<FiberStatistics::LocalFraction> local_fractions(const Packing& index, double diameter) {
+  std::vector<FiberStatistics::LocalFraction> out;
+  const Vec2 cell = index.frame().extent;
+  for (const double side_over_d : {2.0, 4.0, 8.0, 16.0}) {
+    const double side = side_over_d * diameter;
+    const auto nx = static_cast<std::size_t>(std::floor(cell.x / side * (1 + 1e-12)));
+    const auto ny = static_cast<std::size_t>(std::floor(cell.y / side * (1 + 1e-12)));
+    if (nx == 0 || ny == 0) break;
+    std::vector<double> fractions;
+    for (std::size_t j = 0; j < ny; ++j) {
+      for (std::size_t i = 0; i < nx; ++i) {
+        const Vec2 lo{static_cast<double>(i) * side, static_cast<double>(j) * side};
+        const Vec2 mid = lo + Vec2{side, side} * 0.5;
+        double covered = 0;
+        index.for_each_near(mid, side * std::sqrt(0.5) + diameter / 2, [&](const Neighbor& q) {
+          covered += disk_in_square(q.image, diameter / 2, lo, side);
+        });
+        fractions.push_back(covered / (side * side));
+      }
+    }
+    out.push_back({side_over_d, fractions.size(), statistics_of(fractions)});
+  }
+  return out;
+}
+
 }  // namespace
 
 double poisson_nearest_mean(int k, double intensity) {
@@ -149,6 +204,7 @@ FiberStatistics fiber_statistics(const PeriodicBox& cell, const std::vector<Vec2
   }
   const Statistics cells = statistics_of(voronoi_areas(index));
   s.voronoi_area_cv = cells.stddev / cells.mean;
+  s.local_fraction = local_fractions(index, diameter);
   return s;
 }
 

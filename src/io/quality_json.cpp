@@ -128,7 +128,9 @@ void write_quality_json(const std::string& path, const SurfaceMeshQuality& quali
 namespace {
 
 json to_json(const FiberStatistics& s) {
-  json nearest = json::array(), histograms = json::array();
+  json nearest = json::array(), histograms = json::array(), local = json::array();
+  for (const auto& w : s.local_fraction)
+    local.push_back({{"side_over_d", w.side}, {"windows", w.windows}, {"fraction", to_json(w.fraction)}});
   for (int k = 0; k < 6; ++k) nearest.push_back(to_json(s.nearest[k])), histograms.push_back(to_json(s.nearest_histogram[k]));
   return {{"fibers", s.count},
           {"fiber_fraction", s.fiber_fraction},
@@ -143,7 +145,8 @@ json to_json(const FiberStatistics& s) {
           {"psi6_local_mean", s.psi6_local_mean},
           {"psi6_hexagonal_share", s.psi6_hexagonal_share},
           {"psi6_local_histogram", to_json(s.psi6_local)},
-          {"voronoi_area_cv", s.voronoi_area_cv}};
+          {"voronoi_area_cv", s.voronoi_area_cv},
+          {"local_fraction", local}};
 }
 
 }  // namespace
