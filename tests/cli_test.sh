@@ -407,7 +407,7 @@ expect sweep 0 "\| CVT at the count of eta" -- "$bin" sweep --radius 0.05 --eta 
 grep -q "lloyd_optimize_mesh_2" sweep.md && pass=$((pass + 1)) || { echo "FAIL sweep.md"; fails=$((fails + 1)); }
 
 # rve: fibers at an exact volume fraction, CSV x,y,d; the count from vf, then exact
-expect rve 0 "^rve: 357 fibers \(as asked: 357\), vf 0\.7010, diameter 0\.05, gap 0\.0025, cell 1 x 1, from a sample of [0-9]+, phase [a-z ]+, [0-9.]+ s -> fibers\.csv$" -- "$bin" rve --diameter 0.05 --gap 0.0025 --vf 0.7 --seed 4 -o fibers.csv
+expect rve 0 "^rve: 357 fibers \(as asked: 357\), vf 0\.7010, diameter 0\.05, gap 0\.0025, cell 1 x 1, from a sample of [0-9]+, phase [a-z ]+, seed 4, [0-9.]+ s -> fibers\.csv$" -- "$bin" rve --diameter 0.05 --gap 0.0025 --vf 0.7 --seed 4 -o fibers.csv
 head -n 1 fibers.csv | grep -qx "x,y,d" && [ "$(wc -l < fibers.csv)" = 358 ] && [ "$(cut -d, -f3 fibers.csv | sort -u | head -n 1)" = 0.05 ] &&
   pass=$((pass + 1)) || { echo "FAIL rve CSV"; fails=$((fails + 1)); }
 expect rve-count 0 "^rve: 200 fibers \(as asked: 200\), vf 0\.[0-9]+, diameter 0\.05, gap 0, cell 2 x 0\.5" -- "$bin" rve -d 0.05 -n 200 --width 2 --height 0.5 -o fibers2.csv
@@ -416,6 +416,12 @@ expect rve-stats 0 "^rve: 500 fibers \(as asked: 500\)" -- "$bin" rve -d 0.04 --
   pass=$((pass + 1)) || { echo "FAIL rve stats JSON"; fails=$((fails + 1)); }
 expect rve-stats-same-file 2 "--output and --stats name the same file" -- "$bin" rve -d 0.04 -n 300 -o same.csv --stats same.csv
 absent rve-stats-same-file-output same.csv
+expect rve-ensemble 0 "^rve: 3 realizations, [0-9.]+ s$" -- "$bin" rve -d 0.04 --gap 0.002 -n 500 --realizations 3 --seed 2 -o ens.csv --stats ens.json
+cmp -s ens-1.csv fibers3.csv && [ -s ens-3.csv ] && [ ! -e ens.csv ] &&
+  /usr/bin/python3 -c "import json; j=json.load(open('ens.json')); assert j['rve']['realizations']==3 and len(j['realizations'])==3 and j['realizations'][2]['seed']==4 and j['ensemble']['psi6_global']['max']<0.2 and 'rsa' in j['realizations'][0]" &&
+  pass=$((pass + 1)) || { echo "FAIL rve ensemble files"; fails=$((fails + 1)); }
+expect rve-ensemble-collision 2 "--output and --stats name the same file '\./col-2\.csv'" -- "$bin" rve -d 0.04 -n 300 --realizations 2 -o col.csv --stats ./col-2.csv
+absent rve-ensemble-collision-output col-1.csv
 expect rve-both 2 "--vf excludes --fibers" -- "$bin" rve -d 0.05 --vf 0.5 -n 100 -o never.csv
 expect rve-neither 2 "rve: give a fiber count or a fiber volume fraction$" -- "$bin" rve -d 0.05 -o never.csv
 expect rve-too-dense 2 "rve: 367 fibers \(vf 0\.720[0-9]*\) do not fit: with gap 0\.01 the densest \(hexagonal\) arrangement reaches vf 0\.6[0-9]+; ask for fewer fibers or a smaller gap" -- "$bin" rve -d 0.05 --gap 0.01 --vf 0.72 -o never.csv

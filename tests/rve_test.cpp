@@ -123,6 +123,28 @@ TEST(Rve, SameSeedSameFibersOtherSeedOthers) {
   EXPECT_NE(a.centers.front().x, c.centers.front().x);
 }
 
+TEST(Rve, AnEnsembleIsTheSingleRunsOfItsSeedsOnAnyThreads) {
+  RveSpec spec;
+  spec.diameter = 0.04, spec.gap = 0.002, spec.fiber_fraction = 0.68, spec.seed = 7;
+  const std::vector<Rve> two_threads = make_rves(spec, 4, 2), one_thread = make_rves(spec, 4, 1);
+  ASSERT_EQ(two_threads.size(), 4u);
+  for (std::size_t k = 0; k < 4; ++k) {
+    RveSpec single = spec;
+    single.seed = spec.seed + k;
+    const Rve alone = make_rve(single);
+    for (const auto* rves : {&two_threads, &one_thread}) {
+      const Rve& got = (*rves)[k];
+      ASSERT_EQ(got.centers.size(), alone.centers.size()) << "realization " << k;
+      for (std::size_t i = 0; i < alone.centers.size(); ++i) {
+        ASSERT_EQ(got.centers[i].x, alone.centers[i].x);
+        ASSERT_EQ(got.centers[i].y, alone.centers[i].y);
+      }
+    }
+    EXPECT_TRUE(valid(two_threads[k], k + 1));
+  }
+  EXPECT_TRUE(make_rves(spec, 0).empty());
+}
+
 TEST(Rve, RefusesWhatCannotBeMadeSayingWhy) {
   const auto message = [](RveSpec spec) {
     try {

@@ -6,6 +6,7 @@
 #include <string>
 
 #include <cstdint>
+#include <vector>
 
 #include "disktune/fiber_statistics.h"
 #include "disktune/quality.h"
@@ -43,5 +44,16 @@ std::string fiber_statistics_json(const FiberStatistics& fibers, const FiberStat
                                   std::uint64_t seed);
 void write_fiber_statistics_json(const std::string& path, const FiberStatistics& fibers, const FiberStatistics* sample,
                                  double gap, std::uint64_t seed);
+/// An ensemble of realizations (make_rves, seeds first_seed, first_seed + 1, ...): `rve`
+/// (with `realizations`), `ensemble` (min, mean, max and stddev over the realizations of
+/// global and local psi6, the hexagonal share, the Voronoi area CV, each neighbour's mean
+/// distance and each window's local-fraction spread; the mean g(r) and K(r)),
+/// `realizations` [{seed, statistics, rsa}] and the references `csr` and `hexagonal`.
+/// `samples` is empty or holds one sample per realization. Throws InvalidInput for no
+/// realization.
+std::string fiber_ensemble_json(const std::vector<FiberStatistics>& fibers, const std::vector<FiberStatistics>& samples,
+                                double gap, std::uint64_t first_seed);
+void write_fiber_ensemble_json(const std::string& path, const std::vector<FiberStatistics>& fibers,
+                               const std::vector<FiberStatistics>& samples, double gap, std::uint64_t first_seed);
 
 }  // namespace disktune

@@ -64,4 +64,12 @@ std::size_t rve_fiber_count(const RveSpec& spec);
 /// still conflict-free and maximal.
 Rve make_rve(const RveSpec& spec);
 
+/// `count` independent arrangements of one spec (an ensemble, as the paper averaged four
+/// RVEs): realization k has seed spec.seed + k, so it is the one make_rve gives for that
+/// seed, on whichever thread it runs. They run on up to `threads` threads (0: every
+/// core); spec.tune.on_progress, when set, is then called from several threads at once.
+/// The memory check counts all of them running together. An exception from any
+/// realization is rethrown once all have stopped.
+std::vector<Rve> make_rves(const RveSpec& spec, std::size_t count, unsigned threads = 0);
+
 }  // namespace disktune

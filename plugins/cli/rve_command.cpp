@@ -3,6 +3,7 @@
 // of fibers at an exact count or volume fraction, written as CSV x,y,d.
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
@@ -20,49 +21,82 @@ namespace {
 struct RveJob {
   RveSpec spec;
   std::string output, stats;
+  std::size_t realizations = 1;
 };
 
-int run_rve(const RveJob& job) {
-  check_files_apart({}, {{"--output", job.output}, {"--stats", job.stats}});
-  check_output_folder(job.output);
-  check_output_folder(job.stats);
-  const std::size_t count = rve_fiber_count(job.spec);  // fail before any work
-  const auto t0 = std::chrono::steady_clock::now();
-  Rve rve;
+// Realization k's CSV: the output itself for one, else NAME-k.EXT (k from 1).
+std::string output_of(const RveJob& job, std::size_t k) {
+  if (job.realizations == 1) return job.output;
+  const std::filesystem::path path(job.output);
+  std::filesystem::path named = path;
+  named.replace_filename(path.stem().string() + "-" + std::to_string(k + 1) + path.extension().string());
+  return named.string();
+}
+
+std::vector<Rve> make_all(const RveJob& job, std::size_t count) {
   try {
+    if (job.realizations > 1) return make_rves(job.spec, job.realizations);
+    std::vector<Rve> one(1);
     tune_with_progress(0, count, Method::automatic,
                        [&](const TuneOptions& options) {
                          RveSpec spec = job.spec;
                          spec.tune = options;
-                         rve = make_rve(spec);
-                         return rve.tuning;
+                         one[0] = make_rve(spec);
+                         return one[0].tuning;
                        },
                        "", [] {});
+    return one;
   } catch (const InvalidInput& e) {
     if (e.remedy() != InvalidInput::Remedy::memory) throw;
     throw InvalidInput(std::string(e.what()) + " (--max-memory SIZE)");
   }
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  write_fibers_csv(job.output, rve.centers, std::vector<double>(rve.centers.size(), rve.diameter));
-  if (!job.stats.empty()) {
-    const FiberStatistics fibers = fiber_statistics(rve.cell, rve.centers, rve.diameter);
-    if (rve.sample_centers.size() >= 7) {
-      const FiberStatistics sample = fiber_statistics(rve.cell, rve.sample_centers, rve.diameter);
-      write_fiber_statistics_json(job.stats, fibers, &sample, rve.gap, job.spec.seed);
-    } else {
-      write_fiber_statistics_json(job.stats, fibers, nullptr, rve.gap, job.spec.seed);
-    }
+}
+
+void write_statistics(const RveJob& job, const std::vector<Rve>& rves) {
+  std::vector<FiberStatistics> fibers, samples;
+  for (const Rve& rve : rves) {
+    fibers.push_back(fiber_statistics(rve.cell, rve.centers, rve.diameter));
+    if (rve.sample_centers.size() >= 7) samples.push_back(fiber_statistics(rve.cell, rve.sample_centers, rve.diameter));
   }
-  std::printf("rve: %zu fibers (%s%zu), vf %.4f, diameter %g, gap %g, cell %g x %g, from a sample of %zu, "
-              "phase %s, %.3f s -> %s\n",
-              rve.centers.size(), rve.tuning.reached ? "as asked: " : "NOT reached, asked ", count,
-              rve.fiber_fraction, rve.diameter, rve.gap, rve.cell.width(), rve.cell.height(), rve.sample_centers.size(),
-              to_string(rve.tuning.last_phase).c_str(), seconds, job.output.c_str());
-  if (!rve.tuning.reached) {
+  if (samples.size() != fibers.size()) samples.clear();  // a sample of under 7 fibers has no statistics
+  if (rves.size() == 1) {
+    write_fiber_statistics_json(job.stats, fibers[0], samples.empty() ? nullptr : &samples[0], rves[0].gap, job.spec.seed);
+  } else {
+    write_fiber_ensemble_json(job.stats, fibers, samples, rves[0].gap, job.spec.seed);
+  }
+}
+
+int run_rve(const RveJob& job) {
+  std::vector<NamedFile> outputs;
+  for (std::size_t k = 0; k < job.realizations; ++k) outputs.push_back({"--output", output_of(job, k)});
+  outputs.push_back({"--stats", job.stats});
+  check_files_apart({}, outputs);
+  check_output_folder(job.output);
+  check_output_folder(job.stats);
+  const std::size_t count = rve_fiber_count(job.spec);  // fail before any work
+  const auto t0 = std::chrono::steady_clock::now();
+  const std::vector<Rve> rves = make_all(job, count);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  bool reached = true;
+  for (std::size_t k = 0; k < rves.size(); ++k) {
+    const Rve& rve = rves[k];
+    write_fibers_csv(output_of(job, k), rve.centers, std::vector<double>(rve.centers.size(), rve.diameter));
+    reached = reached && rve.tuning.reached;
+    std::printf("rve: %zu fibers (%s%zu), vf %.4f, diameter %g, gap %g, cell %g x %g, from a sample of %zu, "
+                "phase %s, seed %llu",
+                rve.centers.size(), rve.tuning.reached ? "as asked: " : "NOT reached, asked ", count,
+                rve.fiber_fraction, rve.diameter, rve.gap, rve.cell.width(), rve.cell.height(),
+                rve.sample_centers.size(), to_string(rve.tuning.last_phase).c_str(),
+                static_cast<unsigned long long>(job.spec.seed + k));
+    if (rves.size() == 1) std::printf(", %.3f s", seconds);
+    std::printf(" -> %s\n", output_of(job, k).c_str());
+  }
+  if (rves.size() > 1) std::printf("rve: %zu realizations, %.3f s\n", rves.size(), seconds);
+  if (!job.stats.empty()) write_statistics(job, rves);
+  if (!reached) {
     std::fprintf(stderr,
-                 "disktune: the fiber count was not reached: no phase makes progress beyond %zu fibers (vf %.4f); "
-                 "that arrangement was written; ask for fewer fibers or a smaller gap\n",
-                 rve.centers.size(), rve.fiber_fraction);
+                 "disktune: the fiber count was not reached: no phase makes progress beyond the counts above; "
+                 "those arrangements were written; ask for fewer fibers or a smaller gap\n");
     return kExitNotReached;
   }
   return kExitOk;
@@ -95,6 +129,12 @@ void add_rve_command(CLI::App& app, Action& action) {
                   "6th) and orientation, Ripley's K and L, g(r), psi6, Voronoi cell areas; beside them the "
                   "same for the maximal sample it was tuned from (random sequential adsorption), complete "
                   "spatial randomness and the hexagonal lattice");
+  cmd->add_option("--realizations", job->realizations,
+                  "Make K independent arrangements (seeds S, S+1, ...) on all cores, written as "
+                  "NAME-1.csv ... NAME-K.csv; --stats then holds each one's statistics and their "
+                  "spread over the ensemble")
+      ->check(whole_number(1, 10000, "--realizations"))
+      ->capture_default_str();
   add_seed_option(cmd, job->spec.seed);
   add_memory_option(cmd, job->spec.max_memory);
   cmd->callback([job, &action] { action = [job] { return run_rve(*job); }; });

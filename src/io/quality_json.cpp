@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "disktune/quality_json.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <nlohmann/json.hpp>
 
+#include "disktune/errors.h"
 #include "disktune/io.h"
 
 namespace disktune {
@@ -151,8 +153,16 @@ json to_json(const FiberStatistics& s) {
 
 }  // namespace
 
-std::string fiber_statistics_json(const FiberStatistics& fibers, const FiberStatistics* sample, double gap,
-                                  std::uint64_t seed) {
+namespace {
+
+json rve_json(const FiberStatistics& fibers, double gap, std::uint64_t seed) {
+  return {{"fibers", fibers.count}, {"width", fibers.width},  {"height", fibers.height},
+          {"diameter", fibers.diameter}, {"gap", gap},       {"fiber_fraction", fibers.fiber_fraction},
+          {"seed", seed}};
+}
+
+// Complete spatial randomness and the hexagonal lattice at the arrangement's intensity.
+void add_references(json& out, const FiberStatistics& fibers) {
   constexpr double kPi = 3.14159265358979323846;
   const double area = fibers.width * fibers.height, n = static_cast<double>(fibers.count), d = fibers.diameter;
   json csr_nearest = json::array();
@@ -160,22 +170,90 @@ std::string fiber_statistics_json(const FiberStatistics& fibers, const FiberStat
   json csr_k = json::array();
   for (const double r : fibers.r) csr_k.push_back(kPi * r * r);
   const double lattice_spacing = std::sqrt(2 * area / (std::sqrt(3.0) * n));
-  json out;
-  out["rve"] = {{"fibers", fibers.count}, {"width", fibers.width},  {"height", fibers.height},
-                {"diameter", d},          {"gap", gap},             {"fiber_fraction", fibers.fiber_fraction},
-                {"seed", seed}};
-  out["statistics"] = to_json(fibers);
-  if (sample) out["rsa"] = to_json(*sample);
   out["csr"] = {{"nearest_mean_over_d", csr_nearest}, {"ripley_k_over_d2", csr_k}, {"ripley_l_over_d", fibers.r},
                 {"pair_correlation", 1}, {"voronoi_area_cv", kPoissonVoronoiAreaCv}};
   out["hexagonal"] = {{"nearest_over_d", lattice_spacing / d}, {"psi6_global", 1}, {"psi6_local_mean", 1},
                       {"voronoi_area_cv", 0}};
+}
+
+// Min, mean, max and stddev of one figure over the realizations.
+template <class Figure>
+json spread(const std::vector<FiberStatistics>& all, Figure&& figure) {
+  Statistics s;
+  s.min = s.max = figure(all.front());
+  double sum = 0, sum2 = 0;
+  for (const FiberStatistics& f : all) {
+    const double v = figure(f);
+    s.min = std::min(s.min, v), s.max = std::max(s.max, v), sum += v;
+  }
+  s.mean = sum / static_cast<double>(all.size());
+  for (const FiberStatistics& f : all) sum2 += (figure(f) - s.mean) * (figure(f) - s.mean);
+  s.stddev = std::sqrt(sum2 / static_cast<double>(all.size()));
+  return to_json(s);
+}
+
+}  // namespace
+
+std::string fiber_statistics_json(const FiberStatistics& fibers, const FiberStatistics* sample, double gap,
+                                  std::uint64_t seed) {
+  json out;
+  out["rve"] = rve_json(fibers, gap, seed);
+  out["statistics"] = to_json(fibers);
+  if (sample) out["rsa"] = to_json(*sample);
+  add_references(out, fibers);
+  return out.dump(2) + "\n";
+}
+
+std::string fiber_ensemble_json(const std::vector<FiberStatistics>& fibers, const std::vector<FiberStatistics>& samples,
+                                double gap, std::uint64_t first_seed) {
+  if (fibers.empty() || (!samples.empty() && samples.size() != fibers.size())) {
+    throw InvalidInput("fiber_ensemble_json: no realization, or not one sample for each");
+  }
+  json out;
+  out["rve"] = rve_json(fibers.front(), gap, first_seed);
+  out["rve"]["realizations"] = fibers.size();
+  json ensemble;
+  ensemble["psi6_global"] = spread(fibers, [](const FiberStatistics& f) { return f.psi6_global; });
+  ensemble["psi6_local_mean"] = spread(fibers, [](const FiberStatistics& f) { return f.psi6_local_mean; });
+  ensemble["psi6_hexagonal_share"] = spread(fibers, [](const FiberStatistics& f) { return f.psi6_hexagonal_share; });
+  ensemble["voronoi_area_cv"] = spread(fibers, [](const FiberStatistics& f) { return f.voronoi_area_cv; });
+  json nearest = json::array(), local = json::array(), g = json::array(), k_mean = json::array();
+  for (int k = 0; k < 6; ++k)
+    nearest.push_back(spread(fibers, [k](const FiberStatistics& f) { return f.nearest[k].mean; }));
+  for (std::size_t w = 0; w < fibers.front().local_fraction.size(); ++w) {
+    local.push_back({{"side_over_d", fibers.front().local_fraction[w].side},
+                     {"stddev", spread(fibers, [w](const FiberStatistics& f) { return f.local_fraction[w].fraction.stddev; })}});
+  }
+  for (std::size_t i = 0; i < fibers.front().r.size(); ++i) {
+    double gi = 0, ki = 0;
+    for (const FiberStatistics& f : fibers) gi += f.pair_correlation[i], ki += f.ripley_k[i];
+    g.push_back(gi / static_cast<double>(fibers.size())), k_mean.push_back(ki / static_cast<double>(fibers.size()));
+  }
+  ensemble["nearest_mean_over_d"] = nearest;
+  ensemble["local_fraction_stddev"] = local;
+  ensemble["r_over_d"] = fibers.front().r;
+  ensemble["pair_correlation_mean"] = g;
+  ensemble["ripley_k_over_d2_mean"] = k_mean;
+  out["ensemble"] = ensemble;
+  json each = json::array();
+  for (std::size_t k = 0; k < fibers.size(); ++k) {
+    json one = {{"seed", first_seed + k}, {"statistics", to_json(fibers[k])}};
+    if (!samples.empty()) one["rsa"] = to_json(samples[k]);
+    each.push_back(one);
+  }
+  out["realizations"] = each;
+  add_references(out, fibers.front());
   return out.dump(2) + "\n";
 }
 
 void write_fiber_statistics_json(const std::string& path, const FiberStatistics& fibers, const FiberStatistics* sample,
                                  double gap, std::uint64_t seed) {
   write_text(path, fiber_statistics_json(fibers, sample, gap, seed));
+}
+
+void write_fiber_ensemble_json(const std::string& path, const std::vector<FiberStatistics>& fibers,
+                               const std::vector<FiberStatistics>& samples, double gap, std::uint64_t first_seed) {
+  write_text(path, fiber_ensemble_json(fibers, samples, gap, first_seed));
 }
 
 }  // namespace disktune

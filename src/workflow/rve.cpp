@@ -1,14 +1,19 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "disktune/rve.h"
 
+#include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdio>
+#include <exception>
 #include <string>
+#include <thread>
 
 #include "disktune/density.h"
 #include "disktune/errors.h"
 #include "disktune/resources.h"
 #include "disktune/sampling.h"
+#include "../io/number_text.h"
 
 namespace disktune {
 namespace {
@@ -20,13 +25,6 @@ const double kHexagonal = kPi / (2 * std::sqrt(3.0));
 std::string number(double x) {
   char text[32];
   std::snprintf(text, sizeof text, "%.6g", x);
-  return text;
-}
-
-// Sizes in memory, to three digits.
-std::string number3(double x) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3g", x);
   return text;
 }
 
@@ -72,23 +70,32 @@ std::size_t rve_fiber_count(const RveSpec& spec) {
   return static_cast<std::size_t>(wanted);
 }
 
-Rve make_rve(const RveSpec& spec) {
-  const std::size_t count = rve_fiber_count(spec);
+namespace {
+
+// The memory check of `parallel` arrangements made at once.
+void check_memory(const RveSpec& spec, std::size_t count, std::size_t parallel) {
+  const double r = spec.diameter + spec.gap;
+  const ResourceEstimate need = estimate_resources(PeriodicBox(spec.width, spec.height), r).tuned_to(static_cast<double>(count));
+  const double limit = (spec.max_memory > 0 ? spec.max_memory : available_memory()) / static_cast<double>(parallel);
+  if (need.bytes > limit) {  // in fibers, not in the radius the packing counts in
+    const double fits = std::floor(0.9 * static_cast<double>(count) * limit / need.bytes);
+    throw InvalidInput("rve: " + std::to_string(count) + " fibers need about " + detail::short_text(need.bytes / 1073741824.0) +
+                           " GiB" + (parallel > 1 ? " per realization (" + std::to_string(parallel) + " at once)" : "") +
+                           " but " + detail::short_text(limit * static_cast<double>(parallel) / 1073741824.0) +
+                           " GiB are allowed; ask for at most about " + std::to_string(static_cast<std::size_t>(fits)) +
+                           " fibers (larger fibers or a smaller cell)" + (parallel > 1 ? ", fewer threads" : "") +
+                           ", or allow more memory",
+                       InvalidInput::Remedy::memory);
+  }
+  check_resources(need, limit);
+}
+
+Rve make_checked(const RveSpec& spec, std::size_t count) {
   Rve out;
   out.cell = PeriodicBox(spec.width, spec.height);
   out.diameter = spec.diameter;
   out.gap = spec.gap;
   const double r = spec.diameter + spec.gap;  // centers at least this far apart
-  const ResourceEstimate need = estimate_resources(out.cell, r).tuned_to(static_cast<double>(count));
-  const double limit = spec.max_memory > 0 ? spec.max_memory : available_memory();
-  if (need.bytes > limit) {  // in fibers, not in the radius the packing counts in
-    const double fits = std::floor(0.9 * static_cast<double>(count) * limit / need.bytes);
-    throw InvalidInput("rve: " + std::to_string(count) + " fibers need about " + number3(need.bytes / 1073741824.0) +
-                           " GiB but " + number3(limit / 1073741824.0) + " GiB are allowed; ask for at most about " +
-                           std::to_string(static_cast<std::size_t>(fits)) + " fibers (larger fibers or a smaller cell), or allow more memory",
-                       InvalidInput::Remedy::memory);
-  }
-  check_resources(need, limit);
   Rng rng(spec.seed);
   Packing packing = sample_mps(out.cell, r, rng);
   for (const DiskId id : packing.ids()) out.sample_centers.push_back(packing.center(id));
@@ -97,6 +104,44 @@ Rve make_rve(const RveSpec& spec) {
   for (const DiskId id : packing.ids()) out.centers.push_back(packing.center(id));
   out.fiber_fraction = static_cast<double>(packing.size()) * fiber_area(spec.diameter) / out.cell.area();
   out.packing_fraction = area_fraction(packing.size(), r, out.cell.area());
+  return out;
+}
+
+}  // namespace
+
+Rve make_rve(const RveSpec& spec) {
+  const std::size_t count = rve_fiber_count(spec);
+  check_memory(spec, count, 1);
+  return make_checked(spec, count);
+}
+
+std::vector<Rve> make_rves(const RveSpec& spec, std::size_t count, unsigned threads) {
+  const std::size_t fibers = rve_fiber_count(spec);
+  if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
+  const std::size_t parallel = std::min<std::size_t>(threads, count);
+  if (count == 0) return {};
+  check_memory(spec, fibers, parallel);
+  std::vector<Rve> out(count);
+  std::vector<std::exception_ptr> failed(count);
+  std::atomic<std::size_t> next{0};
+  const auto work = [&] {
+    for (std::size_t k; (k = next++) < count;) {
+      try {
+        RveSpec one = spec;
+        one.seed = spec.seed + k;
+        out[k] = make_checked(one, fibers);
+      } catch (...) {
+        failed[k] = std::current_exception();
+        next = count;  // the others stop after their current one
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  for (std::size_t t = 1; t < parallel; ++t) pool.emplace_back(work);
+  work();
+  for (std::thread& t : pool) t.join();
+  for (const std::exception_ptr& e : failed)
+    if (e) std::rethrow_exception(e);
   return out;
 }
 
