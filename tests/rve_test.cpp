@@ -177,6 +177,8 @@ TEST(Rve, RefusesWhatCannotBeMadeSayingWhy) {
   // g = 0.05 D: the hexagonal arrangement reaches vf 0.9069 / 1.1025 = 0.8226.
   s = ok, s.fiber_fraction = 0.83;
   EXPECT_NE(message(s).find("densest (hexagonal) arrangement reaches vf 0.822"), std::string::npos) << message(s);
+  s = ok, s.width = 1e300, s.height = 1e300;
+  EXPECT_NE(message(s).find("far too many"), std::string::npos) << message(s);
   s = ok, s.width = -1;
   EXPECT_THROW(rve_fiber_count(s), InvalidInput);
 }

@@ -59,6 +59,10 @@ std::size_t rve_fiber_count(const RveSpec& spec) {
     throw InvalidInput("rve: a fiber volume fraction of " + number(spec.fiber_fraction) + " is less than half a fiber (" +
                        number(one / area) + " each) in this cell; ask for more, or make the cell larger");
   }
+  if (!(wanted <= 1e15)) {  // also infinite: a cell of 1e300 squared
+    throw InvalidInput("rve: " + number(wanted) + " fibers are far too many; ask for fewer, make the fibers larger or the "
+                       "cell smaller");
+  }
   // The hexagonal packing at center distance D + g holds the most.
   const double spacing_share = d / (d + g);
   const double most = kHexagonal * spacing_share * spacing_share;
