@@ -60,8 +60,8 @@ std::size_t rve_fiber_count(const RveSpec& spec) {
                        number(one / area) + " each) in this cell; ask for more, or make the cell larger");
   }
   if (!(wanted <= 1e15)) {  // also infinite: a cell of 1e300 squared
-    throw InvalidInput("rve: " + number(wanted) + " fibers are far too many; ask for fewer, make the fibers larger or the "
-                       "cell smaller");
+    throw InvalidInput("rve: " + (std::isfinite(wanted) ? number(wanted) + " fibers are" : std::string("that is")) +
+                       " far too many fibers; ask for fewer, make the fibers larger or the cell smaller");
   }
   // The hexagonal packing at center distance D + g holds the most.
   const double spacing_share = d / (d + g);
