@@ -10,38 +10,16 @@
 #include "disktune/errors.h"
 #include "disktune/mesh.h"
 #include "disktune/packing.h"
+#include "mesh_shape.h"
 
 namespace disktune {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-Histogram empty_histogram(double lo, double width, std::size_t bins) {
-  Histogram h;
-  h.lo = lo, h.bin_width = width, h.counts.assign(bins, 0);
-  return h;
-}
-
-void add(Histogram& h, double x) {
-  const double at = (x - h.lo) / h.bin_width;
-  if (at >= 0 && at < static_cast<double>(h.counts.size())) {
-    ++h.counts[static_cast<std::size_t>(at)];
-  } else {
-    ++h.overflow;
-  }
-}
-
-Statistics statistics_of(const std::vector<double>& values) {
-  Statistics s;
-  s.min = *std::min_element(values.begin(), values.end());
-  s.max = *std::max_element(values.begin(), values.end());
-  double sum = 0, sum2 = 0;
-  for (const double v : values) sum += v;
-  s.mean = sum / static_cast<double>(values.size());
-  for (const double v : values) sum2 += (v - s.mean) * (v - s.mean);
-  s.stddev = std::sqrt(sum2 / static_cast<double>(values.size()));
-  return s;
-}
+using detail::add;
+using detail::make_histogram;
+using detail::statistics;
 
 // Each Voronoi cell's area from the periodic Delaunay triangulation: a triangle gives
 // each corner the signed areas of the two triangles (corner, edge midpoint,
@@ -113,7 +91,7 @@ std::vector<FiberStatistics::LocalFraction> local_fractions(const Packing& index
         fractions.push_back(covered / (side * side));
       }
     }
-    out.push_back({side_over_d, fractions.size(), statistics_of(fractions)});
+    out.push_back({side_over_d, fractions.size(), statistics(fractions)});
   }
   return out;
 }
@@ -147,9 +125,9 @@ FiberStatistics fiber_statistics(const PeriodicBox& cell, const std::vector<Vec2
 
   std::vector<double> pairs(rings, 0.0);
   std::array<std::vector<double>, 6> nearest;
-  for (int k = 0; k < 6; ++k) s.nearest_histogram[k] = empty_histogram(0, 0.02, 200);
-  s.nearest_orientation = empty_histogram(0, 10, 18);
-  s.psi6_local = empty_histogram(0, 0.05, 21);  // the last bin holds 1 exactly
+  for (int k = 0; k < 6; ++k) s.nearest_histogram[k] = make_histogram(0, 0.02, 200);
+  s.nearest_orientation = make_histogram(0, 10, 18);
+  s.psi6_local = make_histogram(0, 0.05, 21);  // the last bin holds 1 exactly
   std::complex<double> psi6_sum = 0;
   std::size_t hexagonal = 0;
   std::vector<std::pair<double, Vec2>> near;  // squared distance, bond
@@ -179,7 +157,7 @@ FiberStatistics fiber_statistics(const PeriodicBox& cell, const std::vector<Vec2
     add(s.psi6_local, std::abs(local));
     double angle = std::atan2(near[0].second.y, near[0].second.x) * 180 / kPi;
     if (angle < 0) angle += 180;
-    add(s.nearest_orientation, angle >= 180 ? 0 : angle);
+    add(s.nearest_orientation, angle >= 180 - 1e-6 ? 0 : angle);  // 180 is 0: a bond has no sense
     for (const auto& [d2, bond] : near) {
       // d in ((ring - 1) dr, ring dr], a pair at r (to 1e-9) counted at r: fibers placed
       // at the gap's distance exactly are many (void corners), and within r.
@@ -187,7 +165,7 @@ FiberStatistics fiber_statistics(const PeriodicBox& cell, const std::vector<Vec2
       if (ring >= 1 && ring <= static_cast<double>(rings)) pairs[static_cast<std::size_t>(ring) - 1] += 1;
     }
   }
-  for (int k = 0; k < 6; ++k) s.nearest[k] = statistics_of(nearest[k]);
+  for (int k = 0; k < 6; ++k) s.nearest[k] = statistics(nearest[k]);
   s.psi6_global = std::abs(psi6_sum) / static_cast<double>(n);
   s.psi6_local_mean /= static_cast<double>(n);
   s.psi6_hexagonal_share = static_cast<double>(hexagonal) / static_cast<double>(n);
@@ -202,7 +180,7 @@ FiberStatistics fiber_statistics(const PeriodicBox& cell, const std::vector<Vec2
     s.ripley_l.push_back(std::sqrt(s.ripley_k.back() / kPi));
     s.pair_correlation.push_back(per_pair * pairs[i] / (kPi * (r * r - r_in * r_in) * diameter * diameter));
   }
-  const Statistics cells = statistics_of(voronoi_areas(index));
+  const Statistics cells = statistics(voronoi_areas(index));
   s.voronoi_area_cv = cells.stddev / cells.mean;
   s.local_fraction = local_fractions(index, diameter);
   return s;

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The shape measures shared by planar and surface meshes (internal): each path computes
 // its triangles' angles and circumradii in its own space, then the statistics, the edge
-// lengths and local beta are gathered here once.
+// lengths and local beta are gathered here once; and the histogram and statistics
+// helpers every analysis file uses.
 #pragma once
 
 #include <array>
@@ -20,6 +21,14 @@ namespace disktune::detail {
 inline double corner_angle_deg(double cross_norm, double dot) {
   return std::atan2(cross_norm, dot) * 57.295779513082320876798;
 }
+
+/// An empty histogram: `bins` bins `bin_width` wide from `lo`.
+Histogram make_histogram(double lo, double bin_width, std::size_t bins);
+/// Counts v in its bin: a value within 1e-9 of a bin under its upper boundary counts in
+/// the next bin, one below `lo` in the first, one past the last bin in `overflow`.
+void add(Histogram& h, double v);
+/// Min, mean, max and the population's standard deviation (all 0 for no values).
+Statistics statistics(const std::vector<double>& values);
 
 /// One triangle as the measures see it.
 struct TriangleShape {

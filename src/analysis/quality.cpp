@@ -16,47 +16,20 @@
 namespace disktune {
 namespace {
 
+using detail::add;
+using detail::make_histogram;
+using detail::statistics;
+
 // Angles this close to a threshold (degrees) count as on it: a square lattice's right
 // angles are not obtuse, an angle of 70 - 1e-14 is within [50, 70].
 constexpr double kAngleTolDeg = 1e-9;
 constexpr double kBinSnap = 1e-9;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-Histogram make_histogram(double lo, double bin_width, std::size_t bins) {
-  Histogram h;
-  h.lo = lo;
-  h.bin_width = bin_width;
-  h.counts.assign(bins, 0);
-  return h;
-}
-
-void add(Histogram& h, double v) {
-  const double k = std::floor((v - h.lo) / h.bin_width + kBinSnap);
-  if (k >= static_cast<double>(h.counts.size())) {
-    ++h.overflow;
-  } else {
-    ++h.counts[static_cast<std::size_t>(std::max(k, 0.0))];
-  }
-}
-
 /// The angle at corner a of triangle (a, b, c), in degrees.
 double angle_at(Vec2 a, Vec2 b, Vec2 c) {
   const Vec2 u = b - a, v = c - a;
   return detail::corner_angle_deg(std::abs(cross(u, v)), dot(u, v));
-}
-
-Statistics statistics(const std::vector<double>& values) {
-  Statistics s;
-  if (values.empty()) return s;
-  s.min = *std::min_element(values.begin(), values.end());
-  s.max = *std::max_element(values.begin(), values.end());
-  double sum = 0;
-  for (double v : values) sum += v;
-  s.mean = sum / static_cast<double>(values.size());
-  double var = 0;
-  for (double v : values) var += (v - s.mean) * (v - s.mean);
-  s.stddev = std::sqrt(var / static_cast<double>(values.size()));
-  return s;
 }
 
 QualityReport::Edges edge_statistics(const std::vector<double>& lengths_over_r) {
@@ -127,6 +100,38 @@ void check_uniform_radius(const Packing& packing, double r) {
 }  // namespace
 
 namespace detail {
+
+Histogram make_histogram(double lo, double bin_width, std::size_t bins) {
+  Histogram h;
+  h.lo = lo;
+  h.bin_width = bin_width;
+  h.counts.assign(bins, 0);
+  return h;
+}
+
+void add(Histogram& h, double v) {
+  const double k = std::floor((v - h.lo) / h.bin_width + kBinSnap);
+  if (k >= static_cast<double>(h.counts.size())) {
+    ++h.overflow;
+  } else {
+    ++h.counts[static_cast<std::size_t>(std::max(k, 0.0))];
+  }
+}
+
+Statistics statistics(const std::vector<double>& values) {
+  Statistics s;
+  if (values.empty()) return s;
+  s.min = *std::min_element(values.begin(), values.end());
+  s.max = *std::max_element(values.begin(), values.end());
+  double sum = 0;
+  for (double v : values) sum += v;
+  s.mean = sum / static_cast<double>(values.size());
+  double var = 0;
+  for (double v : values) var += (v - s.mean) * (v - s.mean);
+  s.stddev = std::sqrt(var / static_cast<double>(values.size()));
+  return s;
+}
+
 
 QualityReport::Angles angle_statistics(const std::vector<TriangleShape>& shapes) {
   if (shapes.empty()) throw InvalidInput("cannot measure the angles of a mesh without triangles");
