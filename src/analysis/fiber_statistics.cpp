@@ -133,7 +133,6 @@ FiberStatistics fiber_statistics(const PeriodicBox& cell, const std::vector<Vec2
   std::vector<std::pair<double, Vec2>> near;  // squared distance, bond
   for (DiskId i = 0; i < n; ++i) {
     const Vec2 c = index.center(i);
-    near.clear();
     for (double reach = 3 * spacing;; reach *= 2) {
       near.clear();
       index.for_each_near(c, std::max(reach, r_max), [&](const Neighbor& q) {

@@ -151,10 +151,6 @@ json to_json(const FiberStatistics& s) {
           {"local_fraction", local}};
 }
 
-}  // namespace
-
-namespace {
-
 json rve_json(const FiberStatistics& fibers, double gap, std::uint64_t seed) {
   return {{"fibers", fibers.count}, {"width", fibers.width},  {"height", fibers.height},
           {"diameter", fibers.diameter}, {"gap", gap},       {"fiber_fraction", fibers.fiber_fraction},
