@@ -19,10 +19,10 @@ case "$mode" in run | test | bench) ;; *)
 esac
 cd "$(dirname "$0")/.."
 
-packages=(g++ cmake make libcgal-dev libcli11-dev libgtest-dev nlohmann-json3-dev libpng-dev pkgconf libmuparser-dev libopenmesh-dev libeigen3-dev)
+packages=(g++ cmake make libcgal-dev libcli11-dev libgtest-dev nlohmann-json3-dev libpng-dev pkgconf libmuparser-dev libopenmesh-dev libeigen3-dev libgmsh-dev)
 # The checking build: clang with libFuzzer and its sanitizer runtimes (not a dependency
 # of the clang package).
-[ "$mode" = test ] && packages+=(clang libclang-rt-14-dev)
+[ "$mode" = test ] && packages+=(clang libclang-rt-14-dev python3-meshio)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -71,7 +71,9 @@ checks() {
     'Remesh\.(GivesExactly|WhereTheSurface)' 'PlanarTuning/InDomain\.TuneDownTo04'
     'FeatureMeshing\.' 'FeatureSampling\.(Fandisk|Tuning|EveryPatch)' 'SurfaceSizing\.ThicknessSearch' 'BoundarySpacing\.TuningKeeps')
   local slow="^($(IFS='|'; echo "${skip[*]}"))"
+  # Leaks of third-party libraries only (Gmsh's OpenCASCADE data): tests/lsan.supp.
   ASAN_OPTIONS=halt_on_error=1:detect_leaks=1:print_stacktrace=1 \
+    LSAN_OPTIONS="suppressions=$PWD/tests/lsan.supp:print_suppressions=0" \
     UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 \
     ctest --test-dir "$check" -L unit -E "$slow" --output-on-failure -j2
   bash tests/fuzz/run.sh "$check" "${DISKTUNE_FUZZ_SECONDS:-25}"

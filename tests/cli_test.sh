@@ -430,6 +430,35 @@ expect rve-bad-gap 2 "gap between fibers must be finite and 0 or more, got -0\.1
 expect rve-no-output 2 "--output is required" -- "$bin" rve -d 0.05 --vf 0.3
 expect rve-memory 2 "^disktune: error: rve: [0-9]+ fibers need about [0-9.]+ GiB but 0\.0977 GiB are allowed; ask for at most about [0-9]+ fibers \(larger fibers or a smaller cell\), or allow more memory \(--max-memory SIZE\)$" -- "$bin" rve -d 0.0005 --vf 0.3 --max-memory 100M -o never.csv
 absent rve-nothing-written never.csv
+# rve meshes: Gmsh MSH 4.1 read by meshio (an independent reader), Abaqus input; refusals
+expect rve-mesh 0 "^rve mesh: [0-9]+ nodes, [0-9]+ triangles \([0-9]+ in fibers\), angles [0-9.]+-[0-9.]+ deg, radius ratio max [0-9.]+ mean [0-9.]+, [0-9]+ \+ [0-9]+ periodic node pairs, sides [0-9.e-]+ D clear of fiber tangents, [0-9.]+ s -> cell\.msh -> cell\.inp$" -- "$bin" rve -d 1 -g 0.05 --vf 0.6 --width 8 --height 6 --seed 3 -o cell.csv --msh cell.msh --inp cell.inp --fiber-segments 20
+if /usr/bin/python3 -c "import meshio" 2>/dev/null; then
+  /usr/bin/python3 -c "
+import meshio, numpy as np, csv
+m = meshio.read('cell.msh')
+fibers = list(csv.DictReader(open('cell.csv')))
+tri = np.concatenate([c.data for c in m.cells if c.type == 'triangle'])
+p = m.points[:, :2]
+a = p[tri[:, 1]] - p[tri[:, 0]]; b = p[tri[:, 2]] - p[tri[:, 0]]
+area = 0.5 * (a[:, 0] * b[:, 1] - a[:, 1] * b[:, 0])
+assert (area > 0).all() and abs(area.sum() - 48) < 1e-9, area.sum()
+assert p[:, 0].min() == 0 and p[:, 0].max() == 8 and p[:, 1].min() == 0 and p[:, 1].max() == 6
+left = np.sort(p[p[:, 0] == 0][:, 1]); right = np.sort(p[p[:, 0] == 8][:, 1])
+assert len(left) == len(right) and (left == right).all()
+names = set(m.field_data)
+assert {'matrix', 'fibers', 'left', 'right', 'bottom', 'top', 'corners'} <= names and 'fiber %d' % len(fibers) in names, names
+" && pass=$((pass + 1)) || { echo "FAIL rve mesh read by meshio"; fails=$((fails + 1)); }
+fi
+grep -q "^\*Element, type=CPE3$" cell.inp && grep -q "^\*Nset, nset=LEFT, unsorted$" cell.inp && grep -q "^\*Elset, elset=FIBER-1$" cell.inp &&
+  pass=$((pass + 1)) || { echo "FAIL rve inp sets"; fails=$((fails + 1)); }
+expect rve-mesh-no-gap 2 "^disktune: error: rve mesh: the gap between fibers is 0, under a thousandth of the diameter" -- "$bin" rve -d 0.05 --vf 0.5 -o never.csv --msh never.msh
+absent rve-mesh-no-gap-csv never.csv
+absent rve-mesh-no-gap-msh never.msh
+expect rve-mesh-segments 2 "--fiber-segments" -- "$bin" rve -d 0.05 -g 0.002 --vf 0.5 -o never.csv --inp never.inp --fiber-segments 4
+expect rve-mesh-memory 2 "^disktune: error: rve mesh: about [0-9.e+]+ triangles need about [0-9.]+ GiB but 0\.0977 GiB are allowed; make the element size larger, the cell smaller, or allow more memory \(--element-size, --max-memory SIZE\)$" -- "$bin" rve -d 0.05 -g 0.002 --vf 0.5 -o never.csv --msh never.msh --element-size 0.0005 --max-memory 100M
+absent rve-mesh-memory-msh never.msh
+expect rve-mesh-ensemble 0 "^rve: 2 realizations" -- "$bin" rve -d 1 -g 0.05 -n 30 --width 8 --height 8 --realizations 2 -o e.csv --msh e.msh
+[ -s e-1.msh ] && [ -s e-2.msh ] && ! cmp -s e-1.msh e-2.msh && pass=$((pass + 1)) || { echo "FAIL rve mesh ensemble files"; fails=$((fails + 1)); }
 
 echo "$pass passed, $fails failed"
 [ "$fails" -eq 0 ]

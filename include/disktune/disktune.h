@@ -24,6 +24,7 @@
 #include "disktune/remesh.h"
 #include "disktune/fiber_statistics.h"
 #include "disktune/rve.h"
+#include "disktune/rve_mesh.h"
 #include "disktune/report_pictures.h"
 #include "disktune/resources.h"
 #include "disktune/restricted_delaunay.h"

@@ -38,7 +38,8 @@ struct Rve {
   PeriodicBox cell;
   double diameter = 0, gap = 0;
   /// Fiber centers in [0, W) x [0, H); a fiber cut by the cell's edges continues in its
-  /// periodic images.
+  /// periodic images. The arrangement is translated so that the sides of the cell lie
+  /// as far as they can from the lines where a fiber boundary would touch them.
   std::vector<Vec2> centers;
   /// N pi (D/2)^2 / (W H) of the count reached (exactly the one asked for when
   /// tuning.reached).

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // `disktune rve`: a fiber-composite cross section (rve.h): a random periodic arrangement
-// of fibers at an exact count or volume fraction, written as CSV x,y,d.
+// of fibers at an exact count or volume fraction, written as CSV x,y,d, and its periodic
+// finite-element mesh (rve_mesh.h) as Gmsh MSH and Abaqus input.
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -14,20 +15,22 @@
 #include "disktune/io.h"
 #include "disktune/quality_json.h"
 #include "disktune/rve.h"
+#include "disktune/rve_mesh.h"
 
 namespace disktune::cli {
 namespace {
 
 struct RveJob {
   RveSpec spec;
-  std::string output, stats;
+  RveMeshSpec mesh;
+  std::string output, stats, msh, inp;
   std::size_t realizations = 1;
 };
 
-// Realization k's CSV: the output itself for one, else NAME-k.EXT (k from 1).
-std::string output_of(const RveJob& job, std::size_t k) {
-  if (job.realizations == 1) return job.output;
-  const std::filesystem::path path(job.output);
+// Realization k's file: `file` itself for one, else NAME-k.EXT (k from 1).
+std::string output_of(const RveJob& job, const std::string& file, std::size_t k) {
+  if (job.realizations == 1 || file.empty()) return file;
+  const std::filesystem::path path(file);
   std::filesystem::path named = path;
   named.replace_filename(path.stem().string() + "-" + std::to_string(k + 1) + path.extension().string());
   return named.string();
@@ -66,21 +69,63 @@ void write_statistics(const RveJob& job, const std::vector<Rve>& rves) {
   }
 }
 
+RveMeshSpec mesh_spec(const RveJob& job) {
+  RveMeshSpec spec = job.mesh;
+  spec.max_memory = job.spec.max_memory;
+  return spec;
+}
+
+// Runs `work`, naming the options that help when it is refused for memory.
+template <class Work>
+void memory_remedy(const Work& work) {
+  try {
+    work();
+  } catch (const InvalidInput& e) {
+    if (e.remedy() != InvalidInput::Remedy::memory) throw;
+    throw InvalidInput(std::string(e.what()) + " (--element-size, --max-memory SIZE)");
+  }
+}
+
+void write_mesh(const RveJob& job, const Rve& rve, std::size_t k) {
+  const auto t0 = std::chrono::steady_clock::now();
+  RveMesh mesh;
+  memory_remedy([&] { mesh = mesh_rve(rve, mesh_spec(job)); });
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::size_t in_fibers = 0;
+  for (const std::uint32_t m : mesh.material) in_fibers += m > 0;
+  std::printf("rve mesh: %zu nodes, %zu triangles (%zu in fibers), angles %.1f-%.1f deg, radius ratio max %.2f "
+              "mean %.3f, %zu + %zu periodic node pairs, sides %.3g D clear of fiber tangents, %.3f s",
+              mesh.nodes.size(), mesh.triangles.size(), in_fibers, mesh.angles.min, mesh.angles.max,
+              mesh.radius_ratio.max, mesh.radius_ratio.mean, mesh.left.size() + 2, mesh.bottom.size() + 2,
+              mesh.side_clearance / rve.diameter, seconds);
+  for (const std::string* file : {&job.msh, &job.inp}) {
+    if (!file->empty()) std::printf(" -> %s", output_of(job, *file, k).c_str());
+  }
+  std::printf("\n");
+  if (!job.msh.empty()) write_rve_msh(output_of(job, job.msh, k), mesh);
+  if (!job.inp.empty()) write_rve_inp(output_of(job, job.inp, k), mesh);
+}
+
 int run_rve(const RveJob& job) {
   std::vector<NamedFile> outputs;
-  for (std::size_t k = 0; k < job.realizations; ++k) outputs.push_back({"--output", output_of(job, k)});
+  for (std::size_t k = 0; k < job.realizations; ++k) {
+    outputs.push_back({"--output", output_of(job, job.output, k)});
+    outputs.push_back({"--msh", output_of(job, job.msh, k)});
+    outputs.push_back({"--inp", output_of(job, job.inp, k)});
+  }
   outputs.push_back({"--stats", job.stats});
   check_files_apart({}, outputs);
-  check_output_folder(job.output);
-  check_output_folder(job.stats);
+  for (const std::string* file : {&job.output, &job.stats, &job.msh, &job.inp}) check_output_folder(*file);
   const std::size_t count = rve_fiber_count(job.spec);  // fail before any work
+  const bool meshing = !job.msh.empty() || !job.inp.empty();
+  if (meshing) memory_remedy([&] { check_rve_mesh(job.spec, mesh_spec(job)); });
   const auto t0 = std::chrono::steady_clock::now();
   const std::vector<Rve> rves = make_all(job, count);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   bool reached = true;
   for (std::size_t k = 0; k < rves.size(); ++k) {
     const Rve& rve = rves[k];
-    write_fibers_csv(output_of(job, k), rve.centers, std::vector<double>(rve.centers.size(), rve.diameter));
+    write_fibers_csv(output_of(job, job.output, k), rve.centers, std::vector<double>(rve.centers.size(), rve.diameter));
     reached = reached && rve.tuning.reached;
     std::printf("rve: %zu fibers (%s%zu), vf %.4f, diameter %g, gap %g, cell %g x %g, from a sample of %zu, "
                 "phase %s, seed %llu",
@@ -89,7 +134,8 @@ int run_rve(const RveJob& job) {
                 rve.sample_centers.size(), to_string(rve.tuning.last_phase).c_str(),
                 static_cast<unsigned long long>(job.spec.seed + k));
     if (rves.size() == 1) std::printf(", %.3f s", seconds);
-    std::printf(" -> %s\n", output_of(job, k).c_str());
+    std::printf(" -> %s\n", output_of(job, job.output, k).c_str());
+    if (meshing) write_mesh(job, rve, k);
   }
   if (rves.size() > 1) std::printf("rve: %zu realizations, %.3f s\n", rves.size(), seconds);
   if (!job.stats.empty()) write_statistics(job, rves);
@@ -129,9 +175,21 @@ void add_rve_command(CLI::App& app, Action& action) {
                   "6th) and orientation, Ripley's K and L, g(r), psi6, Voronoi cell areas; beside them the "
                   "same for the maximal sample it was tuned from (random sequential adsorption), complete "
                   "spatial randomness and the hexagonal lattice");
+  cmd->add_option("--msh", job->msh,
+                  "Also write a periodic finite-element mesh of fibers and matrix as Gmsh MSH 4.1: "
+                  "physical groups matrix, fibers, 'fiber K', left, right, bottom, top, corners; the "
+                  "right and top sides periodic copies of the left and bottom, node for node");
+  cmd->add_option("--inp", job->inp,
+                  "Also write the mesh as Abaqus input: CPE3 triangles, element sets MATRIX, FIBERS, "
+                  "FIBER-K, node sets LEFT/RIGHT and BOTTOM/TOP in periodic pairs, CORNER-1..4");
+  cmd->add_option("--fiber-segments", job->mesh.fiber_segments, "Segments of a fiber's boundary in the mesh")
+      ->check(whole_number(6, 10000, "--fiber-segments"))
+      ->capture_default_str();
+  cmd->add_option("--element-size", job->mesh.element_size,
+                  "Largest triangle edge of the mesh (default: a fiber segment's length, pi D / segments)");
   cmd->add_option("--realizations", job->realizations,
                   "Make K independent arrangements (seeds S, S+1, ...) on all cores, written as "
-                  "NAME-1.csv ... NAME-K.csv; --stats then holds each one's statistics and their "
+                  "NAME-1.csv ... NAME-K.csv (and meshes alike); --stats then holds each one's statistics and their "
                   "spread over the ensemble")
       ->check(whole_number(1, 10000, "--realizations"))
       ->capture_default_str();

@@ -94,6 +94,66 @@ void check_memory(const RveSpec& spec, std::size_t count, std::size_t parallel) 
   check_resources(need, limit);
 }
 
+// A place for a cell side, and how far it keeps from the fibers' tangent lines.
+struct SidePlace {
+  double clearance, at;
+};
+
+// The places in [0, period) for a cell side that keep farthest from every fiber's
+// tangent lines c - D/2 and c + D/2 (`coords` the centers' coordinates across the
+// side), widest first: the middles of the `count` widest gaps between those lines.
+// Where a fiber boundary nearly touches a side, a finite-element mesh needs slivers.
+std::vector<SidePlace> side_places(const std::vector<double>& coords, double radius, double period, std::size_t count) {
+  std::vector<double> marks;
+  marks.reserve(2 * coords.size());
+  for (const double c : coords) {
+    for (const double m : {c - radius, c + radius}) marks.push_back(m - period * std::floor(m / period));
+  }
+  std::sort(marks.begin(), marks.end());
+  std::vector<SidePlace> places;
+  for (std::size_t i = 0; i < marks.size(); ++i) {
+    const double from = i == 0 ? marks.back() - period : marks[i - 1], gap = marks[i] - from;
+    const double at = from + gap / 2;
+    places.push_back({gap / 2, at < 0 ? at + period : at});
+  }
+  count = std::min(count, places.size());
+  std::partial_sort(places.begin(), places.begin() + static_cast<std::ptrdiff_t>(count), places.end(),
+                    [](const SidePlace& a, const SidePlace& b) { return a.clearance > b.clearance; });
+  places.resize(count);
+  return places;
+}
+
+// How far the corner `at` keeps from every fiber boundary (a fiber boundary passing a
+// hair from a corner cuts slivers off both sides).
+double corner_clearance(const Rve& rve, Vec2 at) {
+  const double w = rve.cell.width(), h = rve.cell.height();
+  double least = INFINITY;
+  for (const Vec2& c : rve.centers) {
+    const double dx = c.x - at.x - w * std::round((c.x - at.x) / w), dy = c.y - at.y - h * std::round((c.y - at.y) / h);
+    least = std::min(least, std::abs(std::hypot(dx, dy) - rve.diameter / 2));
+  }
+  return least;
+}
+
+// Translates the arrangement (still periodic, as random as before) so that the cell's
+// sides and corners keep clear of the fiber boundaries: of the places the widest gaps
+// give each side, the pair whose worst clearance, sides and corner, is largest.
+void clear_sides(Rve& rve) {
+  constexpr std::size_t kCandidates = 8;
+  std::vector<double> xs, ys;
+  for (const Vec2& c : rve.centers) xs.push_back(c.x), ys.push_back(c.y);
+  const double radius = rve.diameter / 2;
+  Vec2 shift{0, 0};
+  double best = -1;
+  for (const SidePlace& x : side_places(xs, radius, rve.cell.width(), kCandidates)) {
+    for (const SidePlace& y : side_places(ys, radius, rve.cell.height(), kCandidates)) {
+      const double worst = std::min(std::min(x.clearance, y.clearance), corner_clearance(rve, {x.at, y.at}));
+      if (worst > best) best = worst, shift = {x.at, y.at};
+    }
+  }
+  for (Vec2& c : rve.centers) c = rve.cell.wrap(c - shift);
+}
+
 Rve make_checked(const RveSpec& spec, std::size_t count) {
   Rve out;
   out.cell = PeriodicBox(spec.width, spec.height);
@@ -106,6 +166,7 @@ Rve make_checked(const RveSpec& spec, std::size_t count) {
   out.tuning = tune(packing, out.cell, Target::count(count), rng, spec.tune);
   out.centers.reserve(packing.size());
   for (const DiskId id : packing.ids()) out.centers.push_back(packing.center(id));
+  clear_sides(out);
   out.fiber_fraction = static_cast<double>(packing.size()) * fiber_area(spec.diameter) / out.cell.area();
   out.packing_fraction = area_fraction(packing.size(), r, out.cell.area());
   return out;
