@@ -412,7 +412,7 @@ head -n 1 fibers.csv | grep -qx "x,y,d" && [ "$(wc -l < fibers.csv)" = 358 ] && 
   pass=$((pass + 1)) || { echo "FAIL rve CSV"; fails=$((fails + 1)); }
 expect rve-count 0 "^rve: 200 fibers \(as asked: 200\), vf 0\.[0-9]+, diameter 0\.05, gap 0, cell 2 x 0\.5" -- "$bin" rve -d 0.05 -n 200 --width 2 --height 0.5 -o fibers2.csv
 expect rve-stats 0 "^rve: 500 fibers \(as asked: 500\)" -- "$bin" rve -d 0.04 --gap 0.002 -n 500 --seed 2 -o fibers3.csv --stats fibers3.json
-/usr/bin/python3 -c "import json,sys; j=json.load(open('fibers3.json')); s=j['statistics']; assert j['rve']['fibers']==500 and j['rve']['seed']==2 and s['fibers']==500 and j['rsa']['fibers']<500 and len(s['nearest_over_d'])==6 and len(s['r_over_d'])==len(s['pair_correlation'])==len(j['csr']['ripley_k_over_d2']) and 0<=s['psi6_global']<0.2 and j['hexagonal']['psi6_global']==1" &&
+/usr/bin/python3 -c "import json,sys; j=json.load(open('fibers3.json')); s=j['statistics']; assert j['rve']['fibers']==500 and j['rve']['seed']==2 and s['fibers']==500 and j['rsa']['fibers']<500 and len(s['nearest_over_d'])==6 and len(s['r_over_d'])==len(s['pair_correlation'])==len(j['csr']['ripley_k_over_d2']) and 0<=s['psi6_global']<0.2 and j['hexagonal']['psi6_global']==1 and len(j['csr']['local_fraction'])==len(j['hexagonal']['local_fraction'])==len(s['local_fraction'])>0 and all(0<c['stddev']<0.5 for c in j['csr']['local_fraction'])" &&
   pass=$((pass + 1)) || { echo "FAIL rve stats JSON"; fails=$((fails + 1)); }
 expect rve-stats-same-file 2 "--output and --stats name the same file" -- "$bin" rve -d 0.04 -n 300 -o same.csv --stats same.csv
 absent rve-stats-same-file-output same.csv

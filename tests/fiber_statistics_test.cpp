@@ -112,7 +112,56 @@ TEST(FiberStatistics, PoissonPointsMatchCompleteSpatialRandomness) {
     }
     EXPECT_NEAR(s.voronoi_area_cv, kPoissonVoronoiAreaCv, 0.03) << "seed " << seed;
     EXPECT_LT(s.psi6_global, 0.05);
+    // The local fraction's spread against Campbell's theorem: 961 and 225 windows.
+    for (std::size_t w = 0; w < 2; ++w) {
+      const double side = s.local_fraction[w].side * d;
+      EXPECT_NEAR(s.local_fraction[w].fraction.stddev / poisson_local_fraction_stddev(side, d, double(n)), 1, 0.12)
+          << "windows " << s.local_fraction[w].side << " D, seed " << seed;
+    }
   }
+}
+
+TEST(FiberStatistics, LocalFractionReferences) {
+  // CSR: windows much wider than a fiber hold about intensity * side^2 fibers, Poisson
+  // distributed, so the fraction's spread tends to vf / sqrt(intensity side^2) (here the
+  // border fibers, cut by the window, change it by about D / side).
+  const double d = 1, intensity = 0.8 / (kPi / 4);  // vf 0.8 of overlapping fibers
+  for (const double side : {40.0, 80.0}) {
+    const double expected = 0.8 / std::sqrt(intensity * side * side);
+    EXPECT_NEAR(poisson_local_fraction_stddev(side, d, intensity) / expected, 1, 1.5 * d / side) << "side " << side;
+  }
+  // The lattice against counting the points of a fine grid that lie in a fiber (the
+  // nearest lattice points by brute force): two windows 3 D wide.
+  const double spacing = 1.1, lattice_intensity = 2 / (std::sqrt(3.0) * spacing * spacing), side = 3;
+  const auto lattice = hexagonal_local_fraction(side, d, lattice_intensity, 2);
+  ASSERT_EQ(lattice.windows, 4u);
+  std::vector<double> counted;
+  for (int j = 0; j < 2; ++j) {
+    for (int i = 0; i < 2; ++i) {
+      const int grid = 600;
+      std::size_t inside = 0;
+      for (int gy = 0; gy < grid; ++gy) {
+        for (int gx = 0; gx < grid; ++gx) {
+          const double x = (i + (gx + 0.5) / grid) * side, y = (j + (gy + 0.5) / grid) * side;
+          bool in = false;
+          for (int k = -2; k <= 12 && !in; ++k) {
+            for (int m = -2; m <= 12 && !in; ++m) {
+              const double cx = m * spacing + ((k % 2 != 0) ? spacing / 2 : 0), cy = k * spacing * std::sqrt(3.0) / 2;
+              in = (x - cx) * (x - cx) + (y - cy) * (y - cy) <= 0.25;
+            }
+          }
+          inside += in;
+        }
+      }
+      counted.push_back(double(inside) / (grid * grid));
+    }
+  }
+  EXPECT_NEAR(lattice.fraction.min, *std::min_element(counted.begin(), counted.end()), 0.003);
+  EXPECT_NEAR(lattice.fraction.max, *std::max_element(counted.begin(), counted.end()), 0.003);
+  // Wide windows average the lattice's fraction, pi D^2 / 4 times its intensity.
+  const auto wide = hexagonal_local_fraction(40, d, lattice_intensity, 4);
+  EXPECT_NEAR(wide.fraction.mean, kPi / 4 * lattice_intensity, 0.01);
+  EXPECT_LT(wide.fraction.stddev, 0.01);
 }
 
 TEST(FiberStatistics, LocalFractionAgreesWithCountingPoints) {

@@ -62,6 +62,21 @@ FiberStatistics fiber_statistics(const PeriodicBox& cell, const std::vector<Vec2
 /// Complete spatial randomness at `intensity` points per unit area: the mean distance
 /// to the k-th nearest point, Gamma(k + 1/2) / ((k - 1)! sqrt(pi intensity)).
 double poisson_nearest_mean(int k, double intensity);
+/// Complete spatial randomness: the standard deviation of the local fiber fraction of a
+/// square window `side` wide, for fibers of `diameter` whose centers are a Poisson
+/// process of `intensity` (overlaps allowed, counted twice). Campbell's theorem gives the
+/// variance, intensity times the integral over all centers x of (a(x) / side^2)^2, a(x)
+/// the area of the fiber at x inside the window; the integral is taken numerically
+/// (midpoint rule, 256 x 256 points over the window grown by D/2).
+double poisson_local_fraction_stddev(double side, double diameter, double intensity);
+
+/// The hexagonal lattice at `intensity` (spacing sqrt(2 / (sqrt(3) intensity)), one
+/// lattice point at the origin, rows along x): the local fraction of `per_row` x `per_row`
+/// square windows `side` wide laid edge to edge from the origin, as fiber_statistics
+/// lays them; count, and min, mean, max, stddev.
+FiberStatistics::LocalFraction hexagonal_local_fraction(double side, double diameter, double intensity,
+                                                         std::size_t per_row);
+
 /// The area coefficient of variation of Poisson-Voronoi cells in the plane (sqrt of the
 /// normalised area variance 0.280, a known numerical constant).
 constexpr double kPoissonVoronoiAreaCv = 0.529;

@@ -98,6 +98,43 @@ std::vector<FiberStatistics::LocalFraction> local_fractions(const Packing& index
 
 }  // namespace
 
+double poisson_local_fraction_stddev(double side, double diameter, double intensity) {
+  constexpr int kSteps = 256;
+  const double radius = diameter / 2, extent = side + diameter, step = extent / kSteps;
+  double sum = 0;
+  for (int j = 0; j < kSteps; ++j) {
+    for (int i = 0; i < kSteps; ++i) {
+      const Vec2 at{-radius + (i + 0.5) * step, -radius + (j + 0.5) * step};
+      const double a = disk_in_square(at, radius, {0, 0}, side) / (side * side);
+      sum += a * a;
+    }
+  }
+  return std::sqrt(intensity * sum * step * step);
+}
+
+FiberStatistics::LocalFraction hexagonal_local_fraction(double side, double diameter, double intensity,
+                                                         std::size_t per_row) {
+  const double spacing = std::sqrt(2 / (std::sqrt(3.0) * intensity)), row = spacing * std::sqrt(3.0) / 2;
+  const double radius = diameter / 2;
+  std::vector<double> fractions;
+  for (std::size_t j = 0; j < per_row; ++j) {
+    for (std::size_t i = 0; i < per_row; ++i) {
+      const Vec2 lo{static_cast<double>(i) * side, static_cast<double>(j) * side};
+      double covered = 0;
+      // Every lattice point whose fiber can reach the window: rows k, odd rows shifted.
+      const auto k0 = static_cast<long>(std::floor((lo.y - radius) / row)), k1 = static_cast<long>(std::ceil((lo.y + side + radius) / row));
+      for (long k = k0; k <= k1; ++k) {
+        const double shift = (k % 2 != 0) ? spacing / 2 : 0, y = static_cast<double>(k) * row;
+        const auto m0 = static_cast<long>(std::floor((lo.x - radius - shift) / spacing));
+        const auto m1 = static_cast<long>(std::ceil((lo.x + side + radius - shift) / spacing));
+        for (long m = m0; m <= m1; ++m) covered += disk_in_square({static_cast<double>(m) * spacing + shift, y}, radius, lo, side);
+      }
+      fractions.push_back(covered / (side * side));
+    }
+  }
+  return {side / diameter, fractions.size(), statistics(fractions)};
+}
+
 double poisson_nearest_mean(int k, double intensity) {
   double factorial = 1;
   for (int i = 2; i < k; ++i) factorial *= i;

@@ -166,10 +166,21 @@ void add_references(json& out, const FiberStatistics& fibers) {
   json csr_k = json::array();
   for (const double r : fibers.r) csr_k.push_back(kPi * r * r);
   const double lattice_spacing = std::sqrt(2 * area / (std::sqrt(3.0) * n));
+  // The local fraction at the arrangement's window sizes (the lattice: as many windows
+  // as the arrangement's, at least 16 by 16).
+  json csr_local = json::array(), lattice_local = json::array();
+  for (const auto& w : fibers.local_fraction) {
+    csr_local.push_back({{"side_over_d", w.side}, {"stddev", poisson_local_fraction_stddev(w.side * d, d, n / area)}});
+    const auto per_row = std::max<std::size_t>(16, static_cast<std::size_t>(std::ceil(std::sqrt(double(w.windows)))));
+    const auto lattice = hexagonal_local_fraction(w.side * d, d, n / area, per_row);
+    lattice_local.push_back({{"side_over_d", w.side}, {"windows", lattice.windows}, {"min", lattice.fraction.min},
+                             {"mean", lattice.fraction.mean}, {"max", lattice.fraction.max},
+                             {"stddev", lattice.fraction.stddev}});
+  }
   out["csr"] = {{"nearest_mean_over_d", csr_nearest}, {"ripley_k_over_d2", csr_k}, {"ripley_l_over_d", fibers.r},
-                {"pair_correlation", 1}, {"voronoi_area_cv", kPoissonVoronoiAreaCv}};
+                {"pair_correlation", 1}, {"voronoi_area_cv", kPoissonVoronoiAreaCv}, {"local_fraction", csr_local}};
   out["hexagonal"] = {{"nearest_over_d", lattice_spacing / d}, {"psi6_global", 1}, {"psi6_local_mean", 1},
-                      {"voronoi_area_cv", 0}};
+                      {"voronoi_area_cv", 0}, {"local_fraction", lattice_local}};
 }
 
 // Min, mean, max and stddev of one figure over the realizations.
