@@ -430,6 +430,13 @@ expect rve-bad-gap 2 "gap between fibers must be finite and 0 or more, got -0\.1
 expect rve-no-output 2 "--output is required" -- "$bin" rve -d 0.05 --vf 0.3
 expect rve-memory 2 "^disktune: error: rve: [0-9]+ fibers need about [0-9.]+ GiB but 0\.0977 GiB are allowed; ask for at most about [0-9]+ fibers \(larger fibers or a smaller cell\), or allow more memory \(--max-memory SIZE\)$" -- "$bin" rve -d 0.0005 --vf 0.3 --max-memory 100M -o never.csv
 absent rve-nothing-written never.csv
+# rve pictures: five PNGs into an existing folder; a missing one refused before any work
+mkdir -p rvepics
+expect rve-png 0 "^rve: 300 fibers \(as asked: 300\)" -- "$bin" rve -d 0.05 -g 0.0025 -n 300 --seed 5 -o pics.csv --png-dir rvepics
+[ "$(ls rvepics | tr '\n' ' ')" = "cell.png nearest.png pair_correlation.png psi6_local.png ripley_l.png " ] &&
+  pass=$((pass + 1)) || { echo "FAIL rve pictures"; fails=$((fails + 1)); }
+expect rve-png-missing-folder 3 "picture folder 'nopics' does not exist" -- "$bin" rve -d 0.05 -n 300 -o never.csv --png-dir nopics
+absent rve-png-missing-folder-csv never.csv
 # rve meshes: Gmsh MSH 4.1 read by meshio (an independent reader), Abaqus input; refusals
 expect rve-mesh 0 "^rve mesh: [0-9]+ nodes, [0-9]+ triangles \([0-9]+ in fibers\), angles [0-9.]+-[0-9.]+ deg, radius ratio max [0-9.]+ mean [0-9.]+, [0-9]+ \+ [0-9]+ periodic node pairs, sides [0-9.e-]+ D clear of fiber tangents, [0-9.]+ s -> cell\.msh -> cell\.inp$" -- "$bin" rve -d 1 -g 0.05 --vf 0.6 --width 8 --height 6 --seed 3 -o cell.csv --msh cell.msh --inp cell.inp --fiber-segments 20
 if /usr/bin/python3 -c "import meshio" 2>/dev/null; then

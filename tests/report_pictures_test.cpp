@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The report's PNG pictures: decoded here with libpng, of the expected size and not
-// blank; a missing folder is refused before anything is written.
+// blank; a missing folder is refused before anything is written. The fiber cell's
+// picture: its blue pixels are where the fibers are, counted against the fraction.
 #include "disktune/report_pictures.h"
 
 #include <gtest/gtest.h>
@@ -11,6 +12,7 @@
 #include <vector>
 
 #include "disktune/errors.h"
+#include "disktune/rve.h"
 #include "disktune/sampling.h"
 #include "test_util.h"
 
@@ -92,6 +94,44 @@ TEST(ReportPictures, WithoutASpectrumWritesTheHistogramsOnly) {
   EXPECT_TRUE(fs::exists(dir.path / "angles.png"));
   EXPECT_TRUE(fs::exists(dir.path / "edges.png"));
   EXPECT_FALSE(fs::exists(dir.path / "spectrum.png"));
+}
+
+TEST(ReportPictures, FiberPicturesShowTheFibersWhereTheyAre) {
+  RveSpec spec;
+  spec.width = 1, spec.height = 0.5, spec.diameter = 0.05, spec.gap = 0.0025, spec.fiber_fraction = 0.6;
+  const Rve rve = make_rve(spec);
+  const FiberStatistics stats = fiber_statistics(rve.cell, rve.centers, rve.diameter);
+  const FiberStatistics sample = fiber_statistics(rve.cell, rve.sample_centers, rve.diameter);
+  TempDir dir;
+  write_fiber_pictures(dir.path.string(), rve.cell, rve.centers, stats, &sample);
+  for (const char* name : {"pair_correlation.png", "ripley_l.png", "nearest.png", "psi6_local.png"}) {
+    const Decoded d = decode(dir.path / name);
+    EXPECT_EQ(d.width, 640u) << name;
+    EXPECT_GE(distinct_colors(d), 3u) << name;
+  }
+  const Decoded cell = decode(dir.path / "cell.png");
+  ASSERT_EQ(cell.width, 800u);
+  ASSERT_EQ(cell.height, 400u);  // the cell's aspect
+  // Each pixel's center, in the cell (y up), against every fiber and periodic image.
+  const double scale = 800;
+  std::size_t blue = 0, wrong = 0;
+  for (unsigned py = 0; py < cell.height; ++py) {
+    for (unsigned px = 0; px < cell.width; ++px) {
+      const double x = (px + 0.5) / scale, y = 0.5 - (py + 0.5) / scale;
+      double nearest = INFINITY;
+      for (const Vec2 c : rve.centers) {
+        const double dx = x - c.x - std::round(x - c.x), dy = y - c.y - 0.5 * std::round((y - c.y) / 0.5);
+        nearest = std::min(nearest, std::hypot(dx, dy));
+      }
+      const unsigned char* rgb = &cell.rgb[(static_cast<std::size_t>(py) * cell.width + px) * 3];
+      const bool is_blue = rgb[2] > rgb[0] + 50;
+      blue += is_blue;
+      // A pixel more than one pixel inside or outside a fiber has its color.
+      if ((nearest < 0.025 - 1.5 / scale && !is_blue) || (nearest > 0.025 + 1.5 / scale && is_blue)) ++wrong;
+    }
+  }
+  EXPECT_EQ(wrong, 0u);
+  EXPECT_NEAR(double(blue) / (800.0 * 400.0), rve.fiber_fraction, 0.01);
 }
 
 TEST(ReportPictures, RefusesAMissingFolder) {

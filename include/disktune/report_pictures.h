@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The quality report as PNG pictures, for a person to look at: the power spectrum, its
-// radial mean and anisotropy, and the angle and edge-length histograms.
+// radial mean and anisotropy, and the angle and edge-length histograms; and a fiber
+// arrangement's cell and statistics.
 #pragma once
 
 #include <string>
 
+#include "disktune/fiber_statistics.h"
 #include "disktune/quality.h"
 #include "disktune/spectrum.h"
 
@@ -18,6 +20,17 @@ namespace disktune {
 /// `dir` is not an existing folder (nothing written) or a file cannot be written.
 void write_report_pictures(const std::string& dir, const QualityReport& report,
                            const Spectrum* spectrum = nullptr);
+
+/// Writes into the existing folder `dir`: cell.png (the cell, 800 pixels across its width,
+/// each fiber a blue disk, those cut by a side completed by their periodic images),
+/// pair_correlation.png (g over r / D, reference 1) and ripley_l.png (L(r) - r over r / D,
+/// reference 0), each in blue and, when `sample` is given (the arrangement's maximal
+/// sample: random sequential adsorption), its curve in orange; nearest.png (histogram of
+/// the nearest neighbour's distance over D) and psi6_local.png (histogram of local
+/// abs(psi6)). Drawn before any file is written; each written atomically. Throws IoError
+/// as write_report_pictures does.
+void write_fiber_pictures(const std::string& dir, const PeriodicBox& cell, const std::vector<Vec2>& centers,
+                          const FiberStatistics& stats, const FiberStatistics* sample = nullptr);
 
 /// Throws IoError unless `dir` is an existing folder: front ends call it before any
 /// work, so a typo costs no minutes of computing.

@@ -14,6 +14,7 @@
 #include "disktune/fiber_statistics.h"
 #include "disktune/io.h"
 #include "disktune/quality_json.h"
+#include "disktune/report_pictures.h"
 #include "disktune/rve.h"
 #include "disktune/rve_mesh.h"
 
@@ -23,7 +24,7 @@ namespace {
 struct RveJob {
   RveSpec spec;
   RveMeshSpec mesh;
-  std::string output, stats, msh, inp;
+  std::string output, stats, msh, inp, png_dir;
   std::size_t realizations = 1;
 };
 
@@ -62,6 +63,10 @@ void write_statistics(const RveJob& job, const std::vector<Rve>& rves) {
     if (rve.sample_centers.size() >= 7) samples.push_back(fiber_statistics(rve.cell, rve.sample_centers, rve.diameter));
   }
   if (samples.size() != fibers.size()) samples.clear();  // a sample of under 7 fibers has no statistics
+  if (!job.png_dir.empty()) {  // the first realization's
+    write_fiber_pictures(job.png_dir, rves[0].cell, rves[0].centers, fibers[0], samples.empty() ? nullptr : &samples[0]);
+  }
+  if (job.stats.empty()) return;
   if (rves.size() == 1) {
     write_fiber_statistics_json(job.stats, fibers[0], samples.empty() ? nullptr : &samples[0], rves[0].gap, job.spec.seed);
   } else {
@@ -116,6 +121,7 @@ int run_rve(const RveJob& job) {
   outputs.push_back({"--stats", job.stats});
   check_files_apart({}, outputs);
   for (const std::string* file : {&job.output, &job.stats, &job.msh, &job.inp}) check_output_folder(*file);
+  if (!job.png_dir.empty()) check_picture_folder(job.png_dir);
   const std::size_t count = rve_fiber_count(job.spec);  // fail before any work
   const bool meshing = !job.msh.empty() || !job.inp.empty();
   if (meshing) memory_remedy([&] { check_rve_mesh(job.spec, mesh_spec(job)); });
@@ -138,7 +144,7 @@ int run_rve(const RveJob& job) {
     if (meshing) write_mesh(job, rve, k);
   }
   if (rves.size() > 1) std::printf("rve: %zu realizations, %.3f s\n", rves.size(), seconds);
-  if (!job.stats.empty()) write_statistics(job, rves);
+  if (!job.stats.empty() || !job.png_dir.empty()) write_statistics(job, rves);
   if (!reached) {
     std::fprintf(stderr,
                  "disktune: the fiber count was not reached: no phase makes progress beyond the counts above; "
@@ -172,9 +178,14 @@ void add_rve_command(CLI::App& app, Action& action) {
   cmd->add_option("--output,-o", job->output, "CSV file to write (header x,y,d)")->required();
   cmd->add_option("--stats", job->stats,
                   "Also write the arrangement's statistics as JSON: nearest-neighbour distances (1st to "
-                  "6th) and orientation, Ripley's K and L, g(r), psi6, Voronoi cell areas; beside them the "
+                  "6th) and orientation, Ripley's K and L, g(r), psi6, Voronoi cell areas, the local fiber "
+                  "fraction in windows 2 to 16 D wide; beside them the "
                   "same for the maximal sample it was tuned from (random sequential adsorption), complete "
                   "spatial randomness and the hexagonal lattice");
+  cmd->add_option("--png-dir", job->png_dir,
+                  "Also draw into this existing folder: cell.png (the fibers), pair_correlation.png and "
+                  "ripley_l.png (L(r) - r; blue the arrangement, orange the maximal sample it was tuned "
+                  "from), nearest.png and psi6_local.png (histograms); of the first realization");
   cmd->add_option("--msh", job->msh,
                   "Also write a periodic finite-element mesh of fibers and matrix as Gmsh MSH 4.1: "
                   "physical groups matrix, fibers, 'fiber K', left, right, bottom, top, corners; the "

@@ -20,6 +20,7 @@ using detail::Rgb;
 
 constexpr int kWidth = 640, kHeight = 400;
 constexpr Rgb kBlue{31, 90, 180};
+constexpr Rgb kOrange{230, 120, 20};
 // The spectrum's gray scale: log10 P from -2 (black) to 1 (white). A maximal sample's
 // low-frequency gap (P ~ 0.01) is black, its ring (P ~ 2) light, a lattice peak white.
 constexpr double kLogLo = -2, kLogHi = 1;
@@ -80,7 +81,76 @@ Raster histogram_plot(const Histogram& h) {
   return plot.raster();
 }
 
+// The cell with its fibers: a pixel is blue when its center lies in a fiber (or one of
+// its periodic images), found from the fibers whose box covers the pixel's row.
+Raster cell_image(const PeriodicBox& cell, const std::vector<Vec2>& centers, double diameter) {
+  constexpr int kCellWidth = 800;
+  const double w = cell.width(), h = cell.height(), scale = kCellWidth / w, radius = diameter / 2;
+  const int height = std::max(1, static_cast<int>(std::lround(h * scale)));
+  Raster r(kCellWidth, height, {255, 255, 255});
+  for (const Vec2 c : centers) {
+    for (const double dx : {-w, 0.0, w}) {
+      for (const double dy : {-h, 0.0, h}) {
+        const double cx = c.x + dx, cy = c.y + dy;
+        if (cx + radius < 0 || cx - radius > w || cy + radius < 0 || cy - radius > h) continue;
+        const int y0 = std::max(0, static_cast<int>(std::floor((h - cy - radius) * scale)));
+        const int y1 = std::min(height - 1, static_cast<int>(std::ceil((h - cy + radius) * scale)));
+        for (int py = y0; py <= y1; ++py) {
+          const double y = h - (py + 0.5) / scale, half = radius * radius - (y - cy) * (y - cy);
+          if (half < 0) continue;
+          const double reach = std::sqrt(half);
+          const int x0 = std::max(0, static_cast<int>(std::ceil((cx - reach) * scale - 0.5)));
+          const int x1 = std::min(kCellWidth - 1, static_cast<int>(std::floor((cx + reach) * scale - 0.5)));
+          if (x0 <= x1) r.fill_rect(x0, py, x1, py, kBlue);
+        }
+      }
+    }
+  }
+  return r;
+}
+
+// Curves over r / D: the arrangement's in blue, the sample's in orange.
+Raster curves_plot(const FiberStatistics& stats, const FiberStatistics* sample, double reference,
+                   double (*value)(const FiberStatistics&, std::size_t)) {
+  const auto curve = [&](const FiberStatistics& s) {
+    std::vector<std::array<double, 2>> points;
+    for (std::size_t i = 0; i < s.r.size(); ++i) points.push_back({s.r[i], value(s, i)});
+    return points;
+  };
+  const auto fibers = curve(stats);
+  double x_hi = 0, y_lo = reference, y_hi = reference;
+  for (const auto& p : fibers) x_hi = std::max(x_hi, p[0]), y_lo = std::min(y_lo, p[1]), y_hi = std::max(y_hi, p[1]);
+  std::vector<std::array<double, 2>> rsa;
+  if (sample) {
+    rsa = curve(*sample);
+    for (const auto& p : rsa) y_lo = std::min(y_lo, p[1]), y_hi = std::max(y_hi, p[1]);
+  }
+  Plot plot(kWidth, kHeight, 0, x_hi > 0 ? x_hi : 1, y_lo, y_hi > y_lo ? y_hi : y_lo + 1);
+  plot.reference(reference);
+  if (sample) plot.polyline(rsa, kOrange);
+  plot.polyline(fibers, kBlue);
+  plot.axes();
+  return plot.raster();
+}
+
 }  // namespace
+
+void write_fiber_pictures(const std::string& dir, const PeriodicBox& cell, const std::vector<Vec2>& centers,
+                          const FiberStatistics& stats, const FiberStatistics* sample) {
+  check_picture_folder(dir);
+  std::vector<std::pair<std::string, Raster>> pictures;
+  pictures.emplace_back("cell.png", cell_image(cell, centers, stats.diameter));
+  pictures.emplace_back("pair_correlation.png",
+                        curves_plot(stats, sample, 1, [](const FiberStatistics& s, std::size_t i) {
+                          return s.pair_correlation[i];
+                        }));
+  pictures.emplace_back("ripley_l.png", curves_plot(stats, sample, 0, [](const FiberStatistics& s, std::size_t i) {
+                          return s.ripley_l[i] - s.r[i];
+                        }));
+  pictures.emplace_back("nearest.png", histogram_plot(stats.nearest_histogram[0]));
+  pictures.emplace_back("psi6_local.png", histogram_plot(stats.psi6_local));
+  for (const auto& [name, raster] : pictures) detail::write_png(dir + "/" + name, raster);
+}
 
 void check_picture_folder(const std::string& dir) {
   std::error_code ec;
