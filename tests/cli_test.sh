@@ -464,6 +464,8 @@ absent rve-mesh-no-gap-msh never.msh
 expect rve-mesh-segments 2 "--fiber-segments" -- "$bin" rve -d 0.05 -g 0.002 --vf 0.5 -o never.csv --inp never.inp --fiber-segments 4
 expect rve-mesh-memory 2 "^disktune: error: rve mesh: about [0-9.e+]+ triangles need about [0-9.]+ GiB but 0\.0977 GiB are allowed; make the element size larger, the cell smaller, or allow more memory \(--element-size, --max-memory SIZE\)$" -- "$bin" rve -d 0.05 -g 0.002 --vf 0.5 -o never.csv --msh never.msh --element-size 0.0005 --max-memory 100M
 absent rve-mesh-memory-msh never.msh
+expect rve-mesh-options-alone 2 "rve: --fiber-segments and --element-size shape the mesh; add --msh FILE or --inp FILE" -- "$bin" rve -d 0.05 -g 0.002 --vf 0.5 -o never.csv --element-size 0.01
+absent rve-mesh-options-alone-csv never.csv
 expect rve-mesh-ensemble 0 "^rve: 2 realizations" -- "$bin" rve -d 1 -g 0.05 -n 30 --width 8 --height 8 --realizations 2 -o e.csv --msh e.msh
 [ -s e-1.msh ] && [ -s e-2.msh ] && ! cmp -s e-1.msh e-2.msh && pass=$((pass + 1)) || { echo "FAIL rve mesh ensemble files"; fails=$((fails + 1)); }
 

@@ -26,6 +26,7 @@ struct RveJob {
   RveMeshSpec mesh;
   std::string output, stats, msh, inp, png_dir;
   std::size_t realizations = 1;
+  bool mesh_options = false;  // --fiber-segments or --element-size given
 };
 
 // Realization k's file: `file` itself for one, else NAME-k.EXT (k from 1).
@@ -124,6 +125,9 @@ int run_rve(const RveJob& job) {
   if (!job.png_dir.empty()) check_picture_folder(job.png_dir);
   const std::size_t count = rve_fiber_count(job.spec);  // fail before any work
   const bool meshing = !job.msh.empty() || !job.inp.empty();
+  if (job.mesh_options && !meshing) {
+    throw InvalidInput("rve: --fiber-segments and --element-size shape the mesh; add --msh FILE or --inp FILE");
+  }
   if (meshing) memory_remedy([&] { check_rve_mesh(job.spec, mesh_spec(job)); });
   const auto t0 = std::chrono::steady_clock::now();
   const std::vector<Rve> rves = make_all(job, count);
@@ -193,10 +197,10 @@ void add_rve_command(CLI::App& app, Action& action) {
   cmd->add_option("--inp", job->inp,
                   "Also write the mesh as Abaqus input: CPE3 triangles, element sets MATRIX, FIBERS, "
                   "FIBER-K, node sets LEFT/RIGHT and BOTTOM/TOP in periodic pairs, CORNER-1..4");
-  cmd->add_option("--fiber-segments", job->mesh.fiber_segments, "Segments of a fiber's boundary in the mesh")
+  auto* segments = cmd->add_option("--fiber-segments", job->mesh.fiber_segments, "Segments of a fiber's boundary in the mesh")
       ->check(whole_number(6, 10000, "--fiber-segments"))
       ->capture_default_str();
-  cmd->add_option("--element-size", job->mesh.element_size,
+  auto* element_size = cmd->add_option("--element-size", job->mesh.element_size,
                   "Largest triangle edge of the mesh (default: a fiber segment's length, pi D / segments)");
   cmd->add_option("--realizations", job->realizations,
                   "Make K independent arrangements (seeds S, S+1, ...) on all cores, written as "
@@ -206,7 +210,10 @@ void add_rve_command(CLI::App& app, Action& action) {
       ->capture_default_str();
   add_seed_option(cmd, job->spec.seed);
   add_memory_option(cmd, job->spec.max_memory);
-  cmd->callback([job, &action] { action = [job] { return run_rve(*job); }; });
+  cmd->callback([job, &action, segments, element_size] {
+    job->mesh_options = segments->count() > 0 || element_size->count() > 0;
+    action = [job] { return run_rve(*job); };
+  });
 }
 
 }  // namespace disktune::cli
