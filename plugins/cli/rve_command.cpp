@@ -59,7 +59,9 @@ std::vector<Rve> make_all(const RveJob& job, std::size_t count) {
 
 void write_statistics(const RveJob& job, const std::vector<Rve>& rves) {
   std::vector<FiberStatistics> fibers, samples;
-  for (const Rve& rve : rves) {
+  const std::size_t measured = job.stats.empty() ? 1 : rves.size();  // the pictures show the first only
+  for (std::size_t k = 0; k < measured; ++k) {
+    const Rve& rve = rves[k];
     fibers.push_back(fiber_statistics(rve.cell, rve.centers, rve.diameter));
     if (rve.sample_centers.size() >= 7) samples.push_back(fiber_statistics(rve.cell, rve.sample_centers, rve.diameter));
   }
