@@ -244,10 +244,11 @@ void read_mesh(const std::unordered_map<int, std::uint32_t>& material, double un
       for (std::size_t e = 0; e + 2 < corners.size(); e += 3) {
         std::array<std::uint32_t, 3> tri{};
         for (int c = 0; c < 3; ++c) {
-          std::uint32_t& at = renumber.at(index_of.at(corners[e + c]));
+          const std::uint32_t gmsh_index = index_of.at(corners[e + c]);
+          std::uint32_t& at = renumber[gmsh_index];
           if (at == UINT32_MAX) {
             at = static_cast<std::uint32_t>(out.nodes.size());
-            out.nodes.push_back(gmsh_nodes[index_of.at(corners[e + c])]);
+            out.nodes.push_back(gmsh_nodes[gmsh_index]);
           }
           tri[c] = at;
         }
