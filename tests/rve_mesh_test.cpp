@@ -46,7 +46,9 @@ double periodic_distance(Vec2 a, Vec2 b, double w, double h) {
 
 // Everything a mesh of `rve` must be, with `segments` per fiber boundary.
 ::testing::AssertionResult valid_mesh(const Rve& rve, const RveMesh& m, std::size_t segments) {
-  const double w = rve.cell.width(), h = rve.cell.height(), radius = rve.diameter / 2;
+  const double w = rve.cell.width(), h = rve.cell.height();
+  const auto radius = [&](std::size_t k) { return rve.diameters.at(k) / 2; };
+  const double smallest = *std::min_element(rve.diameters.begin(), rve.diameters.end());
   if (m.triangles.size() != m.material.size()) return ::testing::AssertionFailure() << "material count";
   for (const Vec2 p : m.nodes) {
     if (!(p.x >= 0 && p.x <= w && p.y >= 0 && p.y <= h)) {
@@ -65,28 +67,27 @@ double periodic_distance(Vec2 a, Vec2 b, double w, double h) {
     total += area;
     if (m.material[t] > rve.centers.size()) return ::testing::AssertionFailure() << "material " << m.material[t];
     fiber_area[m.material[t]] += area;
+    // The centroid lies in its own fiber's disk; a matrix triangle's, in no fiber's
+    // (but for the sliver between a chord and its arc).
     const Vec2 centroid{(a.x + b.x + c.x) / 3, (a.y + b.y + c.y) / 3};
-    double nearest = INFINITY;
-    std::size_t nearest_fiber = 0;
     for (std::size_t k = 0; k < rve.centers.size(); ++k) {
       const double d = periodic_distance(centroid, rve.centers[k], w, h);
-      if (d < nearest) nearest = d, nearest_fiber = k;
-    }
-    const bool in_fiber = m.material[t] > 0;
-    if (in_fiber && (m.material[t] != nearest_fiber + 1 || nearest > radius)) {
-      return ::testing::AssertionFailure() << "triangle " << t << " of fiber " << m.material[t] - 1
-                                           << " has its centroid " << nearest << " from fiber " << nearest_fiber;
-    }
-    if (!in_fiber && nearest < 0.95 * radius) {
-      return ::testing::AssertionFailure() << "matrix triangle " << t << " lies inside fiber " << nearest_fiber;
+      if (m.material[t] == k + 1 && d > radius(k)) {
+        return ::testing::AssertionFailure() << "triangle " << t << " of fiber " << k << " has its centroid " << d
+                                             << " from its center, radius " << radius(k);
+      }
+      if (m.material[t] == 0 && d < 0.95 * radius(k)) {
+        return ::testing::AssertionFailure() << "matrix triangle " << t << " lies inside fiber " << k;
+      }
     }
   }
   if (std::abs(total - w * h) > 1e-9 * w * h) return ::testing::AssertionFailure() << "area " << total << " of " << w * h;
-  const double longest = 1.5 * kPi * rve.diameter / static_cast<double>(segments);
-  const double chord_angle = 2 * std::asin(std::min(1.0, longest / (2 * radius)));
-  const double sagitta_share = 1 - std::sin(chord_angle) / chord_angle;  // an inscribed polygon's deficit
+  // Segments of the smallest fiber's length, 1.5 times at most.
+  const double longest = 1.5 * kPi * smallest / static_cast<double>(segments);
   for (std::size_t k = 1; k < fiber_area.size(); ++k) {
-    const double disk = kPi * radius * radius;
+    const double chord_angle = 2 * std::asin(std::min(1.0, longest / (2 * radius(k - 1))));
+    const double sagitta_share = 1 - std::sin(chord_angle) / chord_angle;  // an inscribed polygon's deficit
+    const double disk = kPi * radius(k - 1) * radius(k - 1);
     if (!(fiber_area[k] <= disk * (1 + 1e-9) && fiber_area[k] >= disk * (1 - sagitta_share))) {
       return ::testing::AssertionFailure() << "fiber " << k - 1 << " has area " << fiber_area[k] << " for a disk of "
                                            << disk;
@@ -120,14 +121,15 @@ double periodic_distance(Vec2 a, Vec2 b, double w, double h) {
     ++interface_edges[fiber];
     for (const Vec2 p : {a, b}) {
       const double d = periodic_distance(p, rve.centers[fiber - 1], w, h);
-      if (std::abs(d - radius) > 1e-6 * radius) {
+      if (std::abs(d - radius(fiber - 1)) > 1e-6 * radius(fiber - 1)) {
         return ::testing::AssertionFailure() << "an interface node " << d << " from fiber " << fiber - 1;
       }
     }
   }
   for (std::size_t k = 1; k < interface_edges.size(); ++k) {
     // A fiber cut by a side has more pieces, each with its own ends.
-    if (interface_edges[k] < segments * 3 / 4 || interface_edges[k] > segments * 2) {
+    const double share = rve.diameters[k - 1] / smallest;  // larger fibers: more segments of that length
+    if (interface_edges[k] < segments * 3 / 4 || interface_edges[k] > segments * 2 * share) {
       return ::testing::AssertionFailure() << "fiber " << k - 1 << " has " << interface_edges[k]
                                            << " boundary segments for " << segments;
     }
@@ -196,6 +198,18 @@ TEST(RveMesh, TilesTheCellWithMatchedSidesOverSeeds) {
       EXPECT_GT(mesh.angles.min, 15) << "vf " << vf << " seed " << seed;
       EXPECT_GE(mesh.radius_ratio.min, 1 - 1e-9);
     }
+  }
+}
+
+TEST(RveMesh, UnequalFibersEachOnTheirOwnCircle) {
+  for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+    RveSpec spec;
+    spec.width = spec.height = 8, spec.diameter = 1, spec.gap = 0.05, spec.diameter_cv = 0.1;
+    spec.fiber_fraction = 0.65, spec.seed = seed;
+    const Rve rve = make_rve(spec);
+    const RveMesh mesh = mesh_rve(rve);
+    EXPECT_TRUE(valid_mesh(rve, mesh, 24)) << "seed " << seed;
+    EXPECT_GT(mesh.angles.min, 15) << "seed " << seed;
   }
 }
 
@@ -275,6 +289,9 @@ TEST(RveMesh, RefusesWhatItCannotMesh) {
   Rve at_side = rve;
   at_side.centers[0].x = at_side.diameter / 2;  // tangent to the left side
   EXPECT_TRUE(refused(at_side, {}, "touches a side"));
+  Rve unsized = rve;
+  unsized.diameters.pop_back();
+  EXPECT_TRUE(refused(unsized, {}, "one diameter per fiber"));
   RveSpec asked;
   asked.width = asked.height = 8;
   asked.diameter = 1;

@@ -20,10 +20,11 @@
 namespace disktune {
 
 struct RveMeshSpec {
-  /// Segments of a whole fiber boundary (a fiber cut by a side keeps its share).
+  /// Segments of a whole fiber boundary (a fiber cut by a side keeps its share); the
+  /// smallest fiber's, for unequal fibers, the others having more of that length.
   std::size_t fiber_segments = 24;
-  /// The largest triangle edge in the matrix and fibers; 0: one fiber segment's length,
-  /// pi D / fiber_segments.
+  /// The largest triangle edge in the matrix and fibers; 0: one segment's length of the
+  /// smallest fiber, pi d_min / fiber_segments.
   double element_size = 0;
   /// The memory meshing may use, in bytes; 0: what the process may still allocate.
   double max_memory = 0;
@@ -52,14 +53,15 @@ struct RveMesh {
 };
 
 /// Checks that fibers of `rve` can be meshed as `mesh` asks, before they are made:
-/// throws InvalidInput (saying what to change) for a gap under D / 1000 (fibers that
-/// nearly touch leave no matrix between them to mesh), segments outside [6, 10^4], an
-/// element size that is not finite or is under D / 1000, or a mesh too large for the
-/// memory allowed (Remedy::memory).
+/// throws InvalidInput (saying what to change) for a gap under d / 1000, d the smallest
+/// fiber's diameter (fibers that nearly touch leave no matrix between them to mesh),
+/// segments outside [6, 10^4], an element size that is not finite or is under d / 1000,
+/// or a mesh too large for the memory allowed (Remedy::memory).
 void check_rve_mesh(const RveSpec& rve, const RveMeshSpec& mesh);
 
-/// Meshes the cell of `rve`. Throws InvalidInput as check_rve_mesh does, and when a
-/// fiber touches a cell side; a std::runtime_error when Gmsh fails.
+/// Meshes the cell of `rve` (fiber k of diameter rve.diameters[k]). Throws InvalidInput
+/// as check_rve_mesh does, when a fiber touches a cell side, or without one diameter per
+/// fiber; a std::runtime_error when Gmsh fails.
 RveMesh mesh_rve(const Rve& rve, const RveMeshSpec& spec = {});
 
 /// Gmsh's MSH 4.1 (ASCII) of the mesh: entities for the corners, the four sides and

@@ -137,7 +137,7 @@ int run_rve(const RveJob& job) {
   bool reached = true;
   for (std::size_t k = 0; k < rves.size(); ++k) {
     const Rve& rve = rves[k];
-    write_fibers_csv(output_of(job, job.output, k), rve.centers, std::vector<double>(rve.centers.size(), rve.diameter));
+    write_fibers_csv(output_of(job, job.output, k), rve.centers, rve.diameters);
     reached = reached && rve.tuning.reached;
     std::printf("rve: %zu fibers (%s%zu), vf %.4f, diameter %g, gap %g, cell %g x %g, from a sample of %zu, "
                 "phase %s, seed %llu",

@@ -14,6 +14,7 @@
 #include "disktune/resources.h"
 #include "disktune/sampling.h"
 #include "../io/number_text.h"
+#include "rve_polydisperse.h"
 
 namespace disktune {
 namespace {
@@ -30,17 +31,24 @@ std::string number(double x) {
 
 double fiber_area(double d) { return kPi * d * d / 4; }
 
+// Tries at growing unequal fibers from one arrangement of equal ones.
+constexpr int kGrowthAttempts = 3;
+
+bool unequal(const RveSpec& spec) { return spec.diameter_cv != 0 || !spec.diameter_list.empty(); }
+
 }  // namespace
 
 std::size_t rve_fiber_count(const RveSpec& spec) {
-  const double d = spec.diameter, g = spec.gap;
+  const double g = spec.gap;
+  const detail::DiameterLaw law = detail::diameter_law(spec);
+  const double d = law.mean;
   if (!(std::isfinite(d) && d > 0)) throw InvalidInput("rve: the fiber diameter must be finite and positive, got " + number(d));
   if (!(std::isfinite(g) && g >= 0)) {
     throw InvalidInput("rve: the gap between fibers must be finite and 0 or more, got " + number(g));
   }
   const PeriodicBox cell(spec.width, spec.height);
-  if (!(d + g < 0.5 * std::min(cell.width(), cell.height()))) {
-    throw InvalidInput("rve: fibers of diameter " + number(d) + " with gap " + number(g) +
+  if (!(law.largest + g < 0.5 * std::min(cell.width(), cell.height()))) {
+    throw InvalidInput("rve: fibers of diameter " + number(law.largest) + " with gap " + number(g) +
                        " are too wide for the " + number(cell.width()) + " x " + number(cell.height()) +
                        " cell: diameter + gap must be under half its smaller side; make the cell larger or "
                        "the fibers smaller");
@@ -53,7 +61,9 @@ std::size_t rve_fiber_count(const RveSpec& spec) {
   if (by_fraction && !(spec.fiber_fraction > 0 && spec.fiber_fraction < 1)) {
     throw InvalidInput("rve: the fiber volume fraction must lie between 0 and 1, got " + number(spec.fiber_fraction));
   }
-  const double area = cell.area(), one = fiber_area(d);
+  // Unequal fibers count in their mean area, the area of the root mean square diameter.
+  const double rms = unequal(spec) ? std::sqrt(law.mean_square) : d;
+  const double area = cell.area(), one = fiber_area(rms);
   const double wanted = by_count ? static_cast<double>(spec.fibers) : std::round(spec.fiber_fraction * area / one);
   if (wanted < 1) {
     throw InvalidInput("rve: a fiber volume fraction of " + number(spec.fiber_fraction) + " is less than half a fiber (" +
@@ -64,7 +74,7 @@ std::size_t rve_fiber_count(const RveSpec& spec) {
                        " far too many fibers; ask for fewer, make the fibers larger or the cell smaller");
   }
   // The hexagonal packing at center distance D + g holds the most.
-  const double spacing_share = d / (d + g);
+  const double spacing_share = rms / (rms + g);
   const double most = kHexagonal * spacing_share * spacing_share;
   if (wanted * one / area > most) {
     throw InvalidInput("rve: " + number(wanted) + " fibers (vf " + number(wanted * one / area) +
@@ -78,7 +88,7 @@ namespace {
 
 // The memory check of `parallel` arrangements made at once.
 void check_memory(const RveSpec& spec, std::size_t count, std::size_t parallel) {
-  const double r = spec.diameter + spec.gap;
+  const double r = std::sqrt(detail::diameter_law(spec).mean_square) + spec.gap;
   const ResourceEstimate need = estimate_resources(PeriodicBox(spec.width, spec.height), r).tuned_to(static_cast<double>(count));
   const double limit = (spec.max_memory > 0 ? spec.max_memory : available_memory()) / static_cast<double>(parallel);
   if (need.bytes > limit) {  // in fibers, not in the radius the packing counts in
@@ -100,13 +110,15 @@ struct SidePlace {
 };
 
 // The places in [0, period) for a cell side that keep farthest from every fiber's
-// tangent lines c - D/2 and c + D/2 (`coords` the centers' coordinates across the
+// tangent lines c - d/2 and c + d/2 (`coords` the centers' coordinates across the
 // side), widest first: the middles of the `count` widest gaps between those lines.
 // Where a fiber boundary nearly touches a side, a finite-element mesh needs slivers.
-std::vector<SidePlace> side_places(const std::vector<double>& coords, double radius, double period, std::size_t count) {
+std::vector<SidePlace> side_places(const std::vector<double>& coords, const std::vector<double>& diameters,
+                                   double period, std::size_t count) {
   std::vector<double> marks;
   marks.reserve(2 * coords.size());
-  for (const double c : coords) {
+  for (std::size_t i = 0; i < coords.size(); ++i) {
+    const double c = coords[i], radius = diameters[i] / 2;
     for (const double m : {c - radius, c + radius}) marks.push_back(m - period * std::floor(m / period));
   }
   std::sort(marks.begin(), marks.end());
@@ -128,9 +140,10 @@ std::vector<SidePlace> side_places(const std::vector<double>& coords, double rad
 double corner_clearance(const Rve& rve, Vec2 at) {
   const double w = rve.cell.width(), h = rve.cell.height();
   double least = INFINITY;
-  for (const Vec2& c : rve.centers) {
+  for (std::size_t i = 0; i < rve.centers.size(); ++i) {
+    const Vec2 c = rve.centers[i];
     const double dx = c.x - at.x - w * std::round((c.x - at.x) / w), dy = c.y - at.y - h * std::round((c.y - at.y) / h);
-    least = std::min(least, std::abs(std::hypot(dx, dy) - rve.diameter / 2));
+    least = std::min(least, std::abs(std::hypot(dx, dy) - rve.diameters[i] / 2));
   }
   return least;
 }
@@ -142,11 +155,10 @@ void clear_sides(Rve& rve) {
   constexpr std::size_t kCandidates = 8;
   std::vector<double> xs, ys;
   for (const Vec2& c : rve.centers) xs.push_back(c.x), ys.push_back(c.y);
-  const double radius = rve.diameter / 2;
   Vec2 shift{0, 0};
   double best = -1;
-  for (const SidePlace& x : side_places(xs, radius, rve.cell.width(), kCandidates)) {
-    for (const SidePlace& y : side_places(ys, radius, rve.cell.height(), kCandidates)) {
+  for (const SidePlace& x : side_places(xs, rve.diameters, rve.cell.width(), kCandidates)) {
+    for (const SidePlace& y : side_places(ys, rve.diameters, rve.cell.height(), kCandidates)) {
       const double worst = std::min(std::min(x.clearance, y.clearance), corner_clearance(rve, {x.at, y.at}));
       if (worst > best) best = worst, shift = {x.at, y.at};
     }
@@ -154,7 +166,8 @@ void clear_sides(Rve& rve) {
   for (Vec2& c : rve.centers) c = rve.cell.wrap(c - shift);
 }
 
-Rve make_checked(const RveSpec& spec, std::size_t count) {
+// `count` equal fibers of diameter spec.diameter.
+Rve make_equal(const RveSpec& spec, std::size_t count) {
   Rve out;
   out.cell = PeriodicBox(spec.width, spec.height);
   out.diameter = spec.diameter;
@@ -166,9 +179,58 @@ Rve make_checked(const RveSpec& spec, std::size_t count) {
   out.tuning = tune(packing, out.cell, Target::count(count), rng, spec.tune);
   out.centers.reserve(packing.size());
   for (const DiskId id : packing.ids()) out.centers.push_back(packing.center(id));
-  clear_sides(out);
+  out.diameters.assign(out.centers.size(), spec.diameter);
   out.fiber_fraction = static_cast<double>(packing.size()) * fiber_area(spec.diameter) / out.cell.area();
   out.packing_fraction = area_fraction(packing.size(), r, out.cell.area());
+  return out;
+}
+
+// Unequal fibers: the diameters drawn (from their own stream of the seed), equal fibers
+// of their mean square diameter tuned to their count, then grown to them.
+Rve make_unequal(const RveSpec& spec) {
+  Rng rng(spec.seed ^ 0x5bd1e9955bd1e995ULL);
+  std::vector<double> diameters = detail::draw_diameters(spec, rng);
+  const auto n = static_cast<double>(diameters.size());
+  double sum = 0, sum_square = 0, fibers = 0, disks = 0;
+  for (const double d : diameters) sum += d, sum_square += d * d, fibers += fiber_area(d), disks += fiber_area(d + spec.gap);
+  RveSpec equal = spec;
+  equal.diameter = std::sqrt(sum_square / n), equal.diameter_cv = 0, equal.diameter_list.clear();
+  equal.fibers = diameters.size(), equal.fiber_fraction = 0;
+  rve_fiber_count(equal);  // the diameters drawn may fit worse than their law
+  Rve out = make_equal(equal, diameters.size());
+  const std::string asked = std::to_string(diameters.size()) + " fibers (vf " + number(fibers / out.cell.area()) + ")";
+  if (!out.tuning.reached) {
+    const bool dense = out.centers.size() < diameters.size();
+    throw InvalidInput("rve: " + asked + " were asked for, but equal fibers of their mean size " +
+                       (dense ? "stop at " : "stay at ") + std::to_string(out.centers.size()) +
+                       (dense ? ": ask for a lower fiber fraction or a smaller gap"
+                              : ": fewer leave room for more; ask for a higher fiber fraction"));
+  }
+  // Another order of the diameters over the same places often succeeds where one failed.
+  const std::vector<Vec2> places = out.centers;
+  bool grown = false;
+  for (int attempt = 0; attempt < kGrowthAttempts && !grown; ++attempt) {
+    if (attempt > 0) {
+      out.centers = places;
+      for (std::size_t i = diameters.size(); i > 1; --i) std::swap(diameters[i - 1], diameters[uniform_index(rng, i)]);
+    }
+    grown = detail::grow_to_diameters(out.cell, spec.gap, equal.diameter, diameters, out.centers, rng);
+  }
+  if (!grown) {
+    throw InvalidInput("rve: " + asked + " of diameters spread by " + number(std::sqrt(sum_square / n - sum * sum / n / n) / (sum / n)) +
+                       " (coefficient of variation) could not be arranged without overlap and without room for one more of "
+                       "the smallest; ask for a lower fiber fraction, a smaller gap or spread, or try another seed");
+  }
+  out.diameter = sum / n;
+  out.diameters = diameters;
+  out.fiber_fraction = fibers / out.cell.area();
+  out.packing_fraction = disks / out.cell.area();
+  return out;
+}
+
+Rve make_checked(const RveSpec& spec, std::size_t count) {
+  Rve out = unequal(spec) ? make_unequal(spec) : make_equal(spec, count);
+  clear_sides(out);
   return out;
 }
 

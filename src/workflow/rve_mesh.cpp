@@ -23,6 +23,7 @@
 #include "disktune/resources.h"
 #include "../analysis/mesh_shape.h"
 #include "../io/number_text.h"
+#include "rve_polydisperse.h"
 
 namespace disktune {
 namespace {
@@ -52,11 +53,13 @@ struct GmshSession {
 };
 
 // The least distance over all fibers between a fiber boundary and the line of a side
-// (x = 0 and x = W are one line on the torus): |distance of the center - D/2|.
+// (x = 0 and x = W are one line on the torus): |distance of the center - d/2|.
 double side_clearance(const Rve& rve) {
-  const double radius = rve.diameter / 2, w = rve.cell.width(), h = rve.cell.height();
+  const double w = rve.cell.width(), h = rve.cell.height();
   double least = std::min(w, h);
-  for (const Vec2& c : rve.centers) {
+  for (std::size_t k = 0; k < rve.centers.size(); ++k) {
+    const Vec2 c = rve.centers[k];
+    const double radius = rve.diameters[k] / 2;
     least = std::min({least, std::abs(std::min(c.x, w - c.x) - radius), std::abs(std::min(c.y, h - c.y) - radius)});
   }
   return least;
@@ -166,13 +169,13 @@ double seam_angle(double dx, double dy, double radius) {
 // Builds and meshes the cell in units of the diameter; returns, per surface, its
 // material (0 matrix, k + 1 fiber k).
 std::unordered_map<int, std::uint32_t> build_and_mesh(const Rve& rve, const RveMeshSpec& spec, double element_size) {
-  const double unit = rve.diameter, w = rve.cell.width() / unit, h = rve.cell.height() / unit, radius = 0.5;
+  const double unit = rve.diameter, w = rve.cell.width() / unit, h = rve.cell.height() / unit;
   gmsh::model::add("rve");
   const int cell = gmsh::model::occ::addRectangle(0, 0, 0, w, h);
   gmsh::vectorpair disks;
   std::vector<std::uint32_t> fiber_of_disk;
   for (std::size_t k = 0; k < rve.centers.size(); ++k) {
-    const double cx = rve.centers[k].x / unit, cy = rve.centers[k].y / unit;
+    const double cx = rve.centers[k].x / unit, cy = rve.centers[k].y / unit, radius = rve.diameters[k] / 2 / unit;
     const double seam = seam_angle(cx < w / 2 ? -cx : w - cx, cy < h / 2 ? -cy : h - cy, radius);
     for (const double x : {cx - w, cx, cx + w}) {
       for (const double y : {cy - h, cy, cy + h}) {
@@ -206,9 +209,10 @@ std::unordered_map<int, std::uint32_t> build_and_mesh(const Rve& rve, const RveM
   gmsh::model::occ::synchronize();
   make_periodic(side_curves(w, 0, w, h), side_curves(0, 0, 0, h), w, 0);
   make_periodic(side_curves(0, h, w, h), side_curves(0, 0, w, 0), 0, h);
-  // Elements no longer than a fiber segment give the fibers their segments; only larger
-  // ones need Gmsh's sizing from curvature (which costs a third more time).
-  const double segment = kPi / static_cast<double>(spec.fiber_segments);
+  // Elements no longer than the smallest fiber's segment give every fiber its segments;
+  // only larger ones need Gmsh's sizing from curvature (which costs a third more time).
+  const double smallest = *std::min_element(rve.diameters.begin(), rve.diameters.end());
+  const double segment = kPi * smallest / unit / static_cast<double>(spec.fiber_segments);
   if (element_size / unit > segment * (1 + 1e-9)) {
     gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", static_cast<double>(spec.fiber_segments));
   }
@@ -341,19 +345,26 @@ void measure_shape(RveMesh& m) {
 }  // namespace
 
 void check_rve_mesh(const RveSpec& rve, const RveMeshSpec& mesh) {
-  check_spec(rve.width, rve.height, rve.diameter, rve.gap, mesh);
+  const double smallest = rve.diameter_cv != 0 || !rve.diameter_list.empty() ? detail::diameter_law(rve).smallest
+                                                                             : rve.diameter;
+  check_spec(rve.width, rve.height, smallest, rve.gap, mesh);
 }
 
 RveMesh mesh_rve(const Rve& rve, const RveMeshSpec& spec) {
   if (rve.centers.empty()) throw InvalidInput("rve mesh: there are no fibers to mesh");
-  check_spec(rve.cell.width(), rve.cell.height(), rve.diameter, rve.gap, spec);
+  if (rve.diameters.size() != rve.centers.size()) {
+    throw InvalidInput("rve mesh: " + std::to_string(rve.centers.size()) + " fibers but " +
+                       std::to_string(rve.diameters.size()) + " diameters; give one diameter per fiber");
+  }
+  const double smallest = *std::min_element(rve.diameters.begin(), rve.diameters.end());
+  check_spec(rve.cell.width(), rve.cell.height(), smallest, rve.gap, spec);
   const double clearance = side_clearance(rve);
   if (clearance < 1e-5 * rve.diameter) {
     throw InvalidInput("rve mesh: a fiber boundary touches a side of the cell (within " + number(clearance) +
                        "), where the mesh would need slivers; translate the fibers (make_rve places the sides "
                        "clear of them)");
   }
-  const double element_size = element_size_of(spec, rve.diameter);
+  const double element_size = element_size_of(spec, smallest);
   RveMesh out;
   out.width = rve.cell.width();
   out.height = rve.cell.height();
