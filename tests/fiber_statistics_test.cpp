@@ -164,6 +164,55 @@ TEST(FiberStatistics, LocalFractionReferences) {
   EXPECT_LT(wide.fraction.stddev, 0.01);
 }
 
+// The fraction of each window `side` wide (as many as fit the unit cell, laid from the
+// origin) inside some fiber, by counting the points of a 1000 x 1000 grid.
+std::vector<double> counted_fractions(const Rve& rve, double side) {
+  const int grid = 1000, buckets = 20;  // buckets 0.05 wide: wider than any fiber here
+  std::vector<std::vector<std::size_t>> bucket(buckets * buckets);
+  for (std::size_t k = 0; k < rve.centers.size(); ++k) {
+    const Vec2 c = rve.centers[k];
+    bucket[int(c.y * buckets) * buckets + int(c.x * buckets)].push_back(k);
+  }
+  const auto per_side = static_cast<int>(std::floor(1 / side * (1 + 1e-12)));
+  std::vector<double> inside(per_side * per_side, 0), points(per_side * per_side, 0);
+  for (int j = 0; j < grid; ++j) {
+    for (int i = 0; i < grid; ++i) {
+      const double x = (i + 0.5) / grid, y = (j + 0.5) / grid;
+      const int wx = static_cast<int>(x / side), wy = static_cast<int>(y / side);
+      if (wx >= per_side || wy >= per_side) continue;
+      bool in = false;
+      for (int by = -1; by <= 1 && !in; ++by) {
+        for (int bx = -1; bx <= 1 && !in; ++bx) {
+          for (const std::size_t k : bucket[((int(y * buckets) + by + buckets) % buckets) * buckets +
+                                            (int(x * buckets) + bx + buckets) % buckets]) {
+            double dx = x - rve.centers[k].x, dy = y - rve.centers[k].y;
+            dx -= std::round(dx), dy -= std::round(dy);
+            const double r = rve.diameters[k] / 2;
+            in = in || dx * dx + dy * dy < r * r;
+          }
+        }
+      }
+      inside[wy * per_side + wx] += in;
+      points[wy * per_side + wx] += 1;
+    }
+  }
+  for (std::size_t w = 0; w < inside.size(); ++w) inside[w] /= points[w];
+  return inside;
+}
+
+// The 4 D windows' spread against counting points.
+void expect_counted(const FiberStatistics& s, const Rve& rve) {
+  const std::vector<double> counted = counted_fractions(rve, s.local_fraction[1].side * s.diameter);
+  ASSERT_EQ(counted.size(), s.local_fraction[1].windows);
+  double mean = 0, var = 0;
+  const auto n = static_cast<double>(counted.size());
+  for (const double c : counted) mean += c / n;
+  for (const double c : counted) var += (c - mean) * (c - mean) / n;
+  EXPECT_NEAR(s.local_fraction[1].fraction.stddev, std::sqrt(var), 2e-3);
+  EXPECT_NEAR(s.local_fraction[1].fraction.min, *std::min_element(counted.begin(), counted.end()), 3e-3);
+  EXPECT_NEAR(s.local_fraction[1].fraction.max, *std::max_element(counted.begin(), counted.end()), 3e-3);
+}
+
 TEST(FiberStatistics, LocalFractionAgreesWithCountingPoints) {
   RveSpec spec;
   spec.diameter = 0.05, spec.gap = 0.0025, spec.fiber_fraction = 0.65, spec.seed = 3;
@@ -177,36 +226,34 @@ TEST(FiberStatistics, LocalFractionAgreesWithCountingPoints) {
   // 10 x 10 and 5 x 5 windows tile the cell: the fiber area is all counted, once.
   EXPECT_NEAR(s.local_fraction[0].fraction.mean, s.fiber_fraction, 1e-12);
   EXPECT_NEAR(s.local_fraction[1].fraction.mean, s.fiber_fraction, 1e-12);
-  // Each 4 D window (0.2 wide) by counting points of a 1000 x 1000 grid inside a fiber.
-  const int grid = 1000;
-  std::vector<double> inside(25, 0);
-  const double r2 = 0.025 * 0.025;
-  std::vector<std::vector<Vec2>> bucket(20 * 20);  // buckets one diameter wide
-  for (const Vec2 c : rve.centers) bucket[int(c.y * 20) * 20 + int(c.x * 20)].push_back(c);
-  for (int j = 0; j < grid; ++j) {
-    for (int i = 0; i < grid; ++i) {
-      const double x = (i + 0.5) / grid, y = (j + 0.5) / grid;
-      bool in = false;
-      for (int by = -1; by <= 1 && !in; ++by) {
-        for (int bx = -1; bx <= 1 && !in; ++bx) {
-          for (const Vec2 c : bucket[((int(y * 20) + by + 20) % 20) * 20 + (int(x * 20) + bx + 20) % 20]) {
-            double dx = x - c.x, dy = y - c.y;
-            dx -= std::round(dx), dy -= std::round(dy);
-            in = in || dx * dx + dy * dy < r2;
-          }
-        }
-      }
-      inside[(j / 200) * 5 + i / 200] += in;
-    }
+  expect_counted(s, rve);
+}
+
+TEST(FiberStatistics, UnequalFibersCountTheirOwnAreas) {
+  RveSpec spec;
+  spec.diameter = 0.05, spec.gap = 0.0025, spec.diameter_cv = 0.1, spec.fiber_fraction = 0.65, spec.seed = 5;
+  const Rve rve = make_rve(spec);
+  const FiberStatistics s = fiber_statistics(rve.cell, rve.centers, rve.diameters);
+  double area = 0, sum = 0, squares = 0, least = INFINITY, most = 0;
+  for (const double d : rve.diameters) {
+    area += kPi * d * d / 4, sum += d, squares += d * d, least = std::min(least, d), most = std::max(most, d);
   }
-  std::vector<double> counted;
-  for (const double c : inside) counted.push_back(c / (200.0 * 200.0));
-  double mean = 0, var = 0;
-  for (const double c : counted) mean += c / 25;
-  for (const double c : counted) var += (c - mean) * (c - mean) / 25;
-  EXPECT_NEAR(s.local_fraction[1].fraction.stddev, std::sqrt(var), 2e-3);
-  EXPECT_NEAR(s.local_fraction[1].fraction.min, *std::min_element(counted.begin(), counted.end()), 3e-3);
-  EXPECT_NEAR(s.local_fraction[1].fraction.max, *std::max_element(counted.begin(), counted.end()), 3e-3);
+  const double n = static_cast<double>(rve.diameters.size());
+  EXPECT_NEAR(s.fiber_fraction, area, 1e-12);  // the cell is 1 x 1
+  EXPECT_NEAR(s.diameter, sum / n, 1e-15);
+  EXPECT_NEAR(s.diameter_rms, std::sqrt(squares / n), 1e-15);
+  EXPECT_EQ(s.diameters.min, least);
+  EXPECT_EQ(s.diameters.max, most);
+  // Nearest neighbours in units of the mean diameter: no pair closer than the gap allows.
+  EXPECT_GE(s.nearest[0].min, (2 * least / 2 + spec.gap) / s.diameter * (1 - 1e-12));
+  expect_counted(s, rve);
+  // Equal fibers through either call: the same figures.
+  const FiberStatistics one = fiber_statistics(rve.cell, rve.centers, 0.05);
+  const FiberStatistics each = fiber_statistics(rve.cell, rve.centers, std::vector<double>(rve.centers.size(), 0.05));
+  EXPECT_EQ(one.fiber_fraction, each.fiber_fraction);
+  EXPECT_EQ(one.diameter, 0.05);
+  EXPECT_EQ(one.local_fraction[1].fraction.stddev, each.local_fraction[1].fraction.stddev);
+  EXPECT_THROW(fiber_statistics(rve.cell, rve.centers, std::vector<double>(3, 0.05)), InvalidInput);
 }
 
 TEST(FiberStatistics, RefusesTooFewAndCoincidingFibers) {

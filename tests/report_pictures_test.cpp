@@ -103,7 +103,7 @@ TEST(ReportPictures, FiberPicturesShowTheFibersWhereTheyAre) {
   const FiberStatistics stats = fiber_statistics(rve.cell, rve.centers, rve.diameter);
   const FiberStatistics sample = fiber_statistics(rve.cell, rve.sample_centers, rve.diameter);
   TempDir dir;
-  write_fiber_pictures(dir.path.string(), rve.cell, rve.centers, stats, &sample);
+  write_fiber_pictures(dir.path.string(), rve.cell, rve.centers, rve.diameters, stats, &sample);
   for (const char* name : {"pair_correlation.png", "ripley_l.png", "nearest.png", "psi6_local.png"}) {
     const Decoded d = decode(dir.path / name);
     EXPECT_EQ(d.width, 640u) << name;

@@ -20,8 +20,14 @@ namespace disktune {
 
 struct FiberStatistics {
   std::size_t count = 0;
+  /// D: the fibers' mean diameter, the unit of the distances below.
   double width = 0, height = 0, diameter = 0;
-  double fiber_fraction = 0;  ///< N pi (D/2)^2 / (W H)
+  /// The fibers' areas over W H: N pi (D/2)^2 / (W H) for equal fibers.
+  double fiber_fraction = 0;
+  /// The diameters' spread (all D for equal fibers), and their root mean square (the
+  /// diameter of equal fibers of the same fraction, which the references below use).
+  Statistics diameters;
+  double diameter_rms = 0;
   /// The k-th nearest neighbour's distance over D (k = 1..6 at [0..5]), and their
   /// histograms (bins of 0.02 over [0, 4)).
   std::array<Statistics, 6> nearest;
@@ -55,8 +61,12 @@ struct FiberStatistics {
   std::vector<LocalFraction> local_fraction;
 };
 
-/// Throws InvalidInput for fewer than 7 fibers, a diameter that is not positive, or two
-/// coinciding centers. The centers are wrapped into the cell.
+/// Fiber i of diameter diameters[i]. Throws InvalidInput for fewer than 7 fibers, not
+/// one diameter per fiber, a diameter that is not finite and positive, or two coinciding
+/// centers. The centers are wrapped into the cell.
+FiberStatistics fiber_statistics(const PeriodicBox& cell, const std::vector<Vec2>& centers,
+                                 const std::vector<double>& diameters);
+/// Equal fibers of one diameter.
 FiberStatistics fiber_statistics(const PeriodicBox& cell, const std::vector<Vec2>& centers, double diameter);
 
 /// Complete spatial randomness at `intensity` points per unit area: the mean distance

@@ -22,7 +22,8 @@ void write_report_pictures(const std::string& dir, const QualityReport& report,
                            const Spectrum* spectrum = nullptr);
 
 /// Writes into the existing folder `dir`: cell.png (the cell, 800 pixels across its width,
-/// each fiber a blue disk, those cut by a side completed by their periodic images),
+/// fiber i a blue disk of diameter diameters[i], those cut by a side completed by their
+/// periodic images),
 /// pair_correlation.png (g over r / D, reference 1) and ripley_l.png (L(r) - r over r / D,
 /// reference 0), each in blue and, when `sample` is given (the arrangement's maximal
 /// sample: random sequential adsorption), its curve in orange; nearest.png (histogram of
@@ -30,7 +31,7 @@ void write_report_pictures(const std::string& dir, const QualityReport& report,
 /// abs(psi6)). Drawn before any file is written; each written atomically. Throws IoError
 /// as write_report_pictures does.
 void write_fiber_pictures(const std::string& dir, const PeriodicBox& cell, const std::vector<Vec2>& centers,
-                          const FiberStatistics& stats, const FiberStatistics* sample = nullptr);
+                          const std::vector<double>& diameters, const FiberStatistics& stats, const FiberStatistics* sample = nullptr);
 
 /// Throws IoError unless `dir` is an existing folder: front ends call it before any
 /// work, so a typo costs no minutes of computing.

@@ -62,9 +62,11 @@ struct Rve {
   /// The area fraction of the disks of diameter d_i + g (D + g: what the tuning counts in).
   double packing_fraction = 0;
   /// The maximal sample's fiber centers, before tuning: random sequential adsorption of
-  /// the same fibers (for unequal ones: of equal fibers of their mean square diameter)
-  /// to saturation, the reference the statistics compare with.
+  /// the same fibers to saturation, the reference the statistics compare with; and
+  /// their diameter (D; for unequal fibers, equal ones of their root mean square
+  /// diameter: the same fraction).
   std::vector<Vec2> sample_centers;
+  double sample_diameter = 0;
   TuneResult tuning;
 };
 

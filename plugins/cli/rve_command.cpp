@@ -62,12 +62,15 @@ void write_statistics(const RveJob& job, const std::vector<Rve>& rves) {
   const std::size_t measured = job.stats.empty() ? 1 : rves.size();  // the pictures show the first only
   for (std::size_t k = 0; k < measured; ++k) {
     const Rve& rve = rves[k];
-    fibers.push_back(fiber_statistics(rve.cell, rve.centers, rve.diameter));
-    if (rve.sample_centers.size() >= 7) samples.push_back(fiber_statistics(rve.cell, rve.sample_centers, rve.diameter));
+    fibers.push_back(fiber_statistics(rve.cell, rve.centers, rve.diameters));
+    if (rve.sample_centers.size() >= 7) {
+      samples.push_back(fiber_statistics(rve.cell, rve.sample_centers, rve.sample_diameter));
+    }
   }
   if (samples.size() != fibers.size()) samples.clear();  // a sample of under 7 fibers has no statistics
   if (!job.png_dir.empty()) {  // the first realization's
-    write_fiber_pictures(job.png_dir, rves[0].cell, rves[0].centers, fibers[0], samples.empty() ? nullptr : &samples[0]);
+    write_fiber_pictures(job.png_dir, rves[0].cell, rves[0].centers, rves[0].diameters, fibers[0],
+                         samples.empty() ? nullptr : &samples[0]);
   }
   if (job.stats.empty()) return;
   if (rves.size() == 1) {

@@ -71,7 +71,8 @@ double disk_in_square(Vec2 c, double R, Vec2 lo, double side) {
   return area;
 }
 
-std::vector<FiberStatistics::LocalFraction> local_fractions(const Packing& index, double diameter) {
+// Windows `side_over_d` mean diameters wide; each fiber its own radius in `index`.
+std::vector<FiberStatistics::LocalFraction> local_fractions(const Packing& index, double diameter, double widest) {
   std::vector<FiberStatistics::LocalFraction> out;
   const Vec2 cell = index.frame().extent;
   for (const double side_over_d : {2.0, 4.0, 8.0, 16.0}) {
@@ -85,8 +86,8 @@ std::vector<FiberStatistics::LocalFraction> local_fractions(const Packing& index
         const Vec2 lo{static_cast<double>(i) * side, static_cast<double>(j) * side};
         const Vec2 mid = lo + Vec2{side, side} * 0.5;
         double covered = 0;
-        index.for_each_near(mid, side * std::sqrt(0.5) + diameter / 2, [&](const Neighbor& q) {
-          covered += disk_in_square(q.image, diameter / 2, lo, side);
+        index.for_each_near(mid, side * std::sqrt(0.5) + widest / 2, [&](const Neighbor& q) {
+          covered += disk_in_square(q.image, q.radius, lo, side);
         });
         fractions.push_back(covered / (side * side));
       }
@@ -142,23 +143,41 @@ double poisson_nearest_mean(int k, double intensity) {
 }
 
 FiberStatistics fiber_statistics(const PeriodicBox& cell, const std::vector<Vec2>& centers, double diameter) {
+  return fiber_statistics(cell, centers, std::vector<double>(centers.size(), diameter));
+}
+
+FiberStatistics fiber_statistics(const PeriodicBox& cell, const std::vector<Vec2>& centers,
+                                 const std::vector<double>& diameters) {
   if (centers.size() < 7) {
     throw InvalidInput("fiber statistics need at least 7 fibers (six neighbours each), got " +
                        std::to_string(centers.size()));
   }
-  if (!(diameter > 0 && std::isfinite(diameter))) throw InvalidInput("fiber statistics: the diameter must be positive");
+  if (diameters.size() != centers.size()) {
+    throw InvalidInput("fiber statistics: " + std::to_string(centers.size()) + " fibers but " +
+                       std::to_string(diameters.size()) + " diameters; give one diameter per fiber");
+  }
   FiberStatistics s;
   const std::size_t n = centers.size();
   const double w = cell.width(), h = cell.height(), area = cell.area();
+  double fibers = 0, squares = 0;
+  for (const double d : diameters) {
+    if (!(d > 0 && std::isfinite(d))) throw InvalidInput("fiber statistics: the diameter must be positive");
+    fibers += kPi * d * d / 4, squares += d * d;
+  }
+  s.diameters = statistics(diameters);
+  // Equal fibers: D itself, not a sum's rounding of it.
+  const double diameter = s.diameters.min == s.diameters.max ? s.diameters.min : s.diameters.mean;
+  s.diameter_rms = s.diameters.min == s.diameters.max ? diameter : std::sqrt(squares / static_cast<double>(n));
   s.count = n, s.width = w, s.height = h, s.diameter = diameter;
-  s.fiber_fraction = static_cast<double>(n) * kPi * diameter * diameter / 4 / area;
+  s.fiber_fraction = s.diameters.min == s.diameters.max ? static_cast<double>(n) * kPi * diameter * diameter / 4 / area
+                                                        : fibers / area;
 
   // The pairs up to r_max for K and g; six neighbours may lie farther (sparse cells).
   const double r_max = std::min(5 * diameter, 0.5 * std::min(w, h) * (1 - 1e-9));
   const auto rings = static_cast<std::size_t>(std::floor(r_max / (s.dr * diameter) + 1e-9));
   const double spacing = std::sqrt(area / static_cast<double>(n));
-  Packing index(cell.frame(), std::max(r_max, 3 * spacing));
-  for (const Vec2 c : centers) index.insert(cell.wrap(c), diameter / 2);
+  Packing index(cell.frame(), std::max({r_max, 3 * spacing, s.diameters.max / 2}));
+  for (std::size_t i = 0; i < n; ++i) index.insert(cell.wrap(centers[i]), diameters[i] / 2);
 
   std::vector<double> pairs(rings, 0.0);
   std::array<std::vector<double>, 6> nearest;
@@ -218,7 +237,7 @@ FiberStatistics fiber_statistics(const PeriodicBox& cell, const std::vector<Vec2
   }
   const Statistics cells = statistics(voronoi_areas(index));
   s.voronoi_area_cv = cells.stddev / cells.mean;
-  s.local_fraction = local_fractions(index, diameter);
+  s.local_fraction = local_fractions(index, diameter, s.diameters.max);
   return s;
 }
 

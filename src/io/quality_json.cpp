@@ -152,15 +152,18 @@ json to_json(const FiberStatistics& s) {
 }
 
 json rve_json(const FiberStatistics& fibers, double gap, std::uint64_t seed) {
-  return {{"fibers", fibers.count}, {"width", fibers.width},  {"height", fibers.height},
-          {"diameter", fibers.diameter}, {"gap", gap},       {"fiber_fraction", fibers.fiber_fraction},
-          {"seed", seed}};
+  return {{"fibers", fibers.count},         {"width", fibers.width},
+          {"height", fibers.height},        {"diameter", fibers.diameter},
+          {"diameters", to_json(fibers.diameters)}, {"gap", gap},
+          {"fiber_fraction", fibers.fiber_fraction}, {"seed", seed}};
 }
 
-// Complete spatial randomness and the hexagonal lattice at the arrangement's intensity.
+// Complete spatial randomness and the hexagonal lattice at the arrangement's intensity,
+// their fibers equal, of the fraction's diameter (the root mean square).
 void add_references(json& out, const FiberStatistics& fibers) {
   constexpr double kPi = 3.14159265358979323846;
   const double area = fibers.width * fibers.height, n = static_cast<double>(fibers.count), d = fibers.diameter;
+  const double fiber = fibers.diameter_rms;
   json csr_nearest = json::array();
   for (int k = 1; k <= 6; ++k) csr_nearest.push_back(poisson_nearest_mean(k, n / area) / d);
   json csr_k = json::array();
@@ -170,9 +173,9 @@ void add_references(json& out, const FiberStatistics& fibers) {
   // as the arrangement's, at least 16 by 16).
   json csr_local = json::array(), lattice_local = json::array();
   for (const auto& w : fibers.local_fraction) {
-    csr_local.push_back({{"side_over_d", w.side}, {"stddev", poisson_local_fraction_stddev(w.side * d, d, n / area)}});
+    csr_local.push_back({{"side_over_d", w.side}, {"stddev", poisson_local_fraction_stddev(w.side * d, fiber, n / area)}});
     const auto per_row = std::max<std::size_t>(16, static_cast<std::size_t>(std::ceil(std::sqrt(double(w.windows)))));
-    const auto lattice = hexagonal_local_fraction(w.side * d, d, n / area, per_row);
+    const auto lattice = hexagonal_local_fraction(w.side * d, fiber, n / area, per_row);
     lattice_local.push_back({{"side_over_d", w.side}, {"windows", lattice.windows}, {"min", lattice.fraction.min},
                              {"mean", lattice.fraction.mean}, {"max", lattice.fraction.max},
                              {"stddev", lattice.fraction.stddev}});

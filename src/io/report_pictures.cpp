@@ -83,12 +83,14 @@ Raster histogram_plot(const Histogram& h) {
 
 // The cell with its fibers: a pixel is blue when its center lies in a fiber (or one of
 // its periodic images), found from the fibers whose box covers the pixel's row.
-Raster cell_image(const PeriodicBox& cell, const std::vector<Vec2>& centers, double diameter) {
+Raster cell_image(const PeriodicBox& cell, const std::vector<Vec2>& centers, const std::vector<double>& diameters) {
   constexpr int kCellWidth = 800;
-  const double w = cell.width(), h = cell.height(), scale = kCellWidth / w, radius = diameter / 2;
+  const double w = cell.width(), h = cell.height(), scale = kCellWidth / w;
   const int height = std::max(1, static_cast<int>(std::lround(h * scale)));
   Raster r(kCellWidth, height, {255, 255, 255});
-  for (const Vec2 c : centers) {
+  for (std::size_t i = 0; i < centers.size(); ++i) {
+    const Vec2 c = centers[i];
+    const double radius = diameters[i] / 2;
     for (const double dx : {-w, 0.0, w}) {
       for (const double dy : {-h, 0.0, h}) {
         const double cx = c.x + dx, cy = c.y + dy;
@@ -136,10 +138,15 @@ Raster curves_plot(const FiberStatistics& stats, const FiberStatistics* sample, 
 }  // namespace
 
 void write_fiber_pictures(const std::string& dir, const PeriodicBox& cell, const std::vector<Vec2>& centers,
-                          const FiberStatistics& stats, const FiberStatistics* sample) {
+                          const std::vector<double>& diameters, const FiberStatistics& stats,
+                          const FiberStatistics* sample) {
   check_picture_folder(dir);
+  if (diameters.size() != centers.size()) {
+    throw InvalidInput("fiber pictures: " + std::to_string(centers.size()) + " fibers but " +
+                       std::to_string(diameters.size()) + " diameters; give one diameter per fiber");
+  }
   std::vector<std::pair<std::string, Raster>> pictures;
-  pictures.emplace_back("cell.png", cell_image(cell, centers, stats.diameter));
+  pictures.emplace_back("cell.png", cell_image(cell, centers, diameters));
   pictures.emplace_back("pair_correlation.png",
                         curves_plot(stats, sample, 1, [](const FiberStatistics& s, std::size_t i) {
                           return s.pair_correlation[i];

@@ -176,6 +176,7 @@ Rve make_equal(const RveSpec& spec, std::size_t count) {
   Rng rng(spec.seed);
   Packing packing = sample_mps(out.cell, r, rng);
   for (const DiskId id : packing.ids()) out.sample_centers.push_back(packing.center(id));
+  out.sample_diameter = spec.diameter;
   out.tuning = tune(packing, out.cell, Target::count(count), rng, spec.tune);
   out.centers.reserve(packing.size());
   for (const DiskId id : packing.ids()) out.centers.push_back(packing.center(id));
