@@ -468,6 +468,46 @@ expect rve-mesh-options-alone 2 "rve: --fiber-segments and --element-size shape 
 absent rve-mesh-options-alone-csv never.csv
 expect rve-mesh-ensemble 0 "^rve: 2 realizations" -- "$bin" rve -d 1 -g 0.05 -n 30 --width 8 --height 8 --realizations 2 -o e.csv --msh e.msh
 [ -s e-1.msh ] && [ -s e-2.msh ] && ! cmp -s e-1.msh e-2.msh && pass=$((pass + 1)) || { echo "FAIL rve mesh ensemble files"; fails=$((fails + 1)); }
+# rve with unequal fibers: diameters from a law or a list; the additive rule checked here
+expect rve-unequal 0 "^rve: [0-9]+ fibers, vf 0\.70[0-9]+, diameters 0\.[89][0-9]*-1\.[0-2][0-9]* \(mean [0-9.]+, cv 0\.0[6-9][0-9]\), gap 0\.05, cell 20 x 20, from a sample of [0-9]+ equal ones, seed 2, [0-9.]+ s -> un\.csv$" -- "$bin" rve -d 1 -g 0.05 --diameter-cv 0.1 --vf 0.7 --width 20 --height 20 --seed 2 -o un.csv --stats un.json --msh un.msh
+/usr/bin/python3 -c "
+import csv, json, math
+f = [(float(r['x']), float(r['y']), float(r['d'])) for r in csv.DictReader(open('un.csv'))]
+j = json.load(open('un.json'))
+assert j['rve']['fibers'] == len(f) and abs(j['rve']['fiber_fraction'] - sum(math.pi * d * d / 4 for _, _, d in f) / 400) < 1e-12
+assert 0.8 - 1e-12 <= min(d for _, _, d in f) and max(d for _, _, d in f) <= 1.2 + 1e-12
+for i, (x, y, d) in enumerate(f):
+    for (u, v, e) in f[i + 1:]:
+        dx = (u - x + 10) % 20 - 10; dy = (v - y + 10) % 20 - 10
+        assert math.hypot(dx, dy) >= (d + e) / 2 + 0.05, (x, y, u, v)
+" && pass=$((pass + 1)) || { echo "FAIL rve unequal CSV"; fails=$((fails + 1)); }
+if /usr/bin/python3 -c "import meshio" 2>/dev/null; then
+  /usr/bin/python3 -c "
+import meshio, numpy as np, csv, math
+m = meshio.read('un.msh')
+d = [float(r['d']) for r in csv.DictReader(open('un.csv'))]
+p = m.points[:, :2]
+fiber = m.cell_sets_dict['fiber %d' % len(d)]['triangle']
+tri = np.concatenate([c.data for c in m.cells if c.type == 'triangle'])[fiber]
+a = p[tri[:, 1]] - p[tri[:, 0]]; b = p[tri[:, 2]] - p[tri[:, 0]]
+area = 0.5 * (a[:, 0] * b[:, 1] - a[:, 1] * b[:, 0]).sum()
+assert 0.98 * math.pi * d[-1] ** 2 / 4 < area <= math.pi * d[-1] ** 2 / 4, (area, d[-1])
+" && pass=$((pass + 1)) || { echo "FAIL rve unequal mesh read by meshio"; fails=$((fails + 1)); }
+fi
+printf 'd\n6.8\n7.0\n7.3\n' > measured.csv
+expect rve-diameter-list 0 "^rve: [0-9]+ fibers, vf 0\.6[0-9]+, diameters 6\.8-7\.3 \(mean [0-9.]+, cv 0\.0[0-9]+\), gap 0\.35" -- "$bin" rve --diameters measured.csv -g 0.35 --vf 0.65 --width 140 --height 140 -o listed.csv
+/usr/bin/python3 -c "
+import csv
+assert {r['d'] for r in csv.DictReader(open('listed.csv'))} == {'6.8', '7', '7.3'}
+" && pass=$((pass + 1)) || { echo "FAIL rve diameter list values"; fails=$((fails + 1)); }
+expect rve-diameters-of-an-rve 0 "^rve: [0-9]+ fibers, vf 0\.6[0-9]+, diameters 0\.[89]" -- "$bin" rve --diameters un.csv -g 0.05 --vf 0.65 --width 20 --height 20 -o again.csv
+expect rve-no-diameter 2 "rve: give the fibers' diameter \(--diameter D\) or a file of diameters \(--diameters FILE\)" -- "$bin" rve --vf 0.6 -o never.csv
+expect rve-diameter-and-list 2 "--diameter excludes --diameters" -- "$bin" rve -d 7 --diameters measured.csv --vf 0.6 -o never.csv
+expect rve-cv-too-wide 2 "coefficient of variation must lie between 0 and 0\.2, got 0\.3" -- "$bin" rve -d 1 --diameter-cv 0.3 --vf 0.6 --width 20 --height 20 -o never.csv
+printf 'd\n7\nseven\n' > badlist.csv
+expect rve-bad-list 2 "badlist\.csv:3: expected a finite number 'd', found 'seven'" -- "$bin" rve --diameters badlist.csv --vf 0.6 --width 140 --height 140 -o never.csv
+expect rve-unequal-too-sparse 2 "were asked for, but equal fibers of their mean size stay at [0-9]+: fewer leave room for more; ask for a higher fiber fraction" -- "$bin" rve -d 1 --diameter-cv 0.1 --vf 0.3 --width 20 --height 20 -o never.csv
+absent rve-unequal-nothing-written never.csv
 
 echo "$pass passed, $fails failed"
 [ "$fails" -eq 0 ]

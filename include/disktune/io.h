@@ -61,6 +61,12 @@ void write_points_csv(const std::string& path, const Packing& packing);
 /// the same length.
 void write_fibers_csv(const std::string& path, const std::vector<Vec2>& centers, const std::vector<double>& diameters);
 
+/// Fiber diameters from a CSV file with the header `d` (one diameter a line: measured
+/// ones, say) or `x,y,d` (its d column: the diameters of an arrangement written above).
+/// Throws IoError when it cannot be read, InvalidInput "PATH:LINE: ..." for a diameter
+/// that is not finite and positive, other content, or no diameter at all.
+std::vector<double> read_diameters_csv(const std::string& path);
+
 struct PointRecord {
   double x, y, r;
 };

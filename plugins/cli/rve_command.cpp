@@ -2,7 +2,9 @@
 // `disktune rve`: a fiber-composite cross section (rve.h): a random periodic arrangement
 // of fibers at an exact count or volume fraction, written as CSV x,y,d, and its periodic
 // finite-element mesh (rve_mesh.h) as Gmsh MSH and Abaqus input.
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -24,9 +26,10 @@ namespace {
 struct RveJob {
   RveSpec spec;
   RveMeshSpec mesh;
-  std::string output, stats, msh, inp, png_dir;
+  std::string output, stats, msh, inp, png_dir, diameters;
   std::size_t realizations = 1;
   bool mesh_options = false;  // --fiber-segments or --element-size given
+  bool diameter_given = false;  // --diameter or --diameters
 };
 
 // Realization k's file: `file` itself for one, else NAME-k.EXT (k from 1).
@@ -117,7 +120,11 @@ void write_mesh(const RveJob& job, const Rve& rve, std::size_t k) {
   if (!job.inp.empty()) write_rve_inp(output_of(job, job.inp, k), mesh);
 }
 
-int run_rve(const RveJob& job) {
+int run_rve(const RveJob& given) {
+  if (!given.diameter_given) {
+    throw InvalidInput("rve: give the fibers' diameter (--diameter D) or a file of diameters (--diameters FILE)");
+  }
+  RveJob job = given;
   std::vector<NamedFile> outputs;
   for (std::size_t k = 0; k < job.realizations; ++k) {
     outputs.push_back({"--output", output_of(job, job.output, k)});
@@ -128,6 +135,8 @@ int run_rve(const RveJob& job) {
   check_files_apart({}, outputs);
   for (const std::string* file : {&job.output, &job.stats, &job.msh, &job.inp}) check_output_folder(*file);
   if (!job.png_dir.empty()) check_picture_folder(job.png_dir);
+  if (!job.diameters.empty()) job.spec.diameter_list = read_diameters_csv(job.diameters);
+  const bool unequal = job.spec.diameter_cv != 0 || !job.spec.diameter_list.empty();
   const std::size_t count = rve_fiber_count(job.spec);  // fail before any work
   const bool meshing = !job.msh.empty() || !job.inp.empty();
   if (job.mesh_options && !meshing) {
@@ -142,12 +151,24 @@ int run_rve(const RveJob& job) {
     const Rve& rve = rves[k];
     write_fibers_csv(output_of(job, job.output, k), rve.centers, rve.diameters);
     reached = reached && rve.tuning.reached;
-    std::printf("rve: %zu fibers (%s%zu), vf %.4f, diameter %g, gap %g, cell %g x %g, from a sample of %zu, "
-                "phase %s, seed %llu",
-                rve.centers.size(), rve.tuning.reached ? "as asked: " : "NOT reached, asked ", count,
-                rve.fiber_fraction, rve.diameter, rve.gap, rve.cell.width(), rve.cell.height(),
-                rve.sample_centers.size(), to_string(rve.tuning.last_phase).c_str(),
-                static_cast<unsigned long long>(job.spec.seed + k));
+    if (unequal) {  // each arrangement draws its own diameters, and so its own count for a fraction
+      const auto [least, most] = std::minmax_element(rve.diameters.begin(), rve.diameters.end());
+      double spread = 0;
+      for (const double d : rve.diameters) spread += (d - rve.diameter) * (d - rve.diameter);
+      spread = std::sqrt(spread / static_cast<double>(rve.diameters.size())) / rve.diameter;
+      std::printf("rve: %zu fibers, vf %.4f, diameters %g-%g (mean %g, cv %.3f), gap %g, cell %g x %g, "
+                  "from a sample of %zu equal ones, seed %llu",
+                  rve.centers.size(), rve.fiber_fraction, *least, *most, rve.diameter, spread, rve.gap,
+                  rve.cell.width(), rve.cell.height(), rve.sample_centers.size(),
+                  static_cast<unsigned long long>(job.spec.seed + k));
+    } else {
+      std::printf("rve: %zu fibers (%s%zu), vf %.4f, diameter %g, gap %g, cell %g x %g, from a sample of %zu, "
+                  "phase %s, seed %llu",
+                  rve.centers.size(), rve.tuning.reached ? "as asked: " : "NOT reached, asked ", count,
+                  rve.fiber_fraction, rve.diameter, rve.gap, rve.cell.width(), rve.cell.height(),
+                  rve.sample_centers.size(), to_string(rve.tuning.last_phase).c_str(),
+                  static_cast<unsigned long long>(job.spec.seed + k));
+    }
     if (rves.size() == 1) std::printf(", %.3f s", seconds);
     std::printf(" -> %s\n", output_of(job, job.output, k).c_str());
     if (meshing) write_mesh(job, rve, k);
@@ -174,11 +195,20 @@ void add_rve_command(CLI::App& app, Action& action) {
       "and no room left for one more (a maximal sample at center distance D + G, tuned to the "
       "count). Writes CSV x,y,d (fiber centers in the cell; a fiber cut by an edge continues on "
       "the opposite side). docs/rve.md");
-  cmd->add_option("--diameter,-d", job->spec.diameter, "Fiber diameter D")->required();
+  auto* diameter = cmd->add_option("--diameter,-d", job->spec.diameter, "Fiber diameter D (the mean, with --diameter-cv)");
+  auto* cv = cmd->add_option("--diameter-cv", job->spec.diameter_cv,
+                             "Unequal fibers: diameters from a normal law of mean D and standard deviation CV x D, "
+                             "redrawn beyond two standard deviations (CV up to 0.2); no two fibers closer than "
+                             "(d1 + d2) / 2 + G, no room for one more of the smallest");
+  auto* listed = cmd->add_option("--diameters", job->diameters,
+                                 "Unequal fibers: diameters drawn at random from this CSV file, header 'd' (one "
+                                 "measured diameter a line) or 'x,y,d' (an arrangement's)");
+  listed->excludes(diameter)->excludes(cv);
   cmd->add_option("--gap,-g", job->spec.gap, "Least matrix gap G between two fibers (centers at least D + G apart)")
       ->capture_default_str();
   auto* vf = cmd->add_option("--vf", job->spec.fiber_fraction,
-                             "Fiber volume fraction vf = N pi (D/2)^2 / (W H) wanted (the count nearest it)");
+                             "Fiber volume fraction vf = N pi (D/2)^2 / (W H) wanted (the count nearest it; unequal fibers: "
+                             "the count of diameters drawn whose areas come nearest)");
   auto* fibers = cmd->add_option("--fibers,-n", job->spec.fibers, "Exact number of fibers wanted")
                      ->check(whole_number(1, UINT64_MAX, "--fibers"));
   vf->excludes(fibers);
@@ -215,7 +245,8 @@ void add_rve_command(CLI::App& app, Action& action) {
       ->capture_default_str();
   add_seed_option(cmd, job->spec.seed);
   add_memory_option(cmd, job->spec.max_memory);
-  cmd->callback([job, &action, segments, element_size] {
+  cmd->callback([job, &action, segments, element_size, diameter, listed] {
+    job->diameter_given = diameter->count() > 0 || listed->count() > 0;
     job->mesh_options = segments->count() > 0 || element_size->count() > 0;
     action = [job] { return run_rve(*job); };
   });

@@ -59,7 +59,8 @@ CsvNumbers read_csv_numbers(const std::string& path, const std::vector<std::stri
       double v = 0;
       const auto res = std::from_chars(p, end, v);
       if (res.ec != std::errc() || !std::isfinite(v)) {
-        fail("expected " + count + " finite numbers '" + out.header + "', found '" + t + "'");
+        fail("expected " + (out.columns == 1 ? std::string("a finite number") : count + " finite numbers") + " '" +
+             out.header + "', found '" + t + "'");
       }
       out.values.push_back(v);
       p = res.ptr;
@@ -101,6 +102,23 @@ void write_fibers_csv(const std::string& path, const std::vector<Vec2>& centers,
     out << "x,y,d\n";
     for (std::size_t i = 0; i < centers.size(); ++i) detail::put_csv_row(out, {centers[i].x, centers[i].y, diameters[i]});
   });
+}
+
+std::vector<double> read_diameters_csv(const std::string& path) {
+  const detail::CsvNumbers rows = detail::read_csv_numbers(path, {"d", "x,y,d"});
+  if (rows.rows() == 0) throw InvalidInput("'" + path + "' holds no diameters, only a header");
+  std::vector<double> out;
+  out.reserve(rows.rows());
+  for (std::size_t k = 0; k < rows.rows(); ++k) {
+    const double d = rows.at(k, rows.columns - 1);
+    if (!(d > 0)) {
+      std::ostringstream msg;
+      msg << path << ":" << rows.lines[k] << ": a diameter must be positive, found " << d;
+      throw InvalidInput(msg.str());
+    }
+    out.push_back(d);
+  }
+  return out;
 }
 
 std::vector<PointRecord> read_points_csv(const std::string& path) {
