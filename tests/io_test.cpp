@@ -65,6 +65,33 @@ TEST(PointsCsv, BadContentNamesTheLine) {
   EXPECT_THROW(read_points_csv(dir.file("missing.csv")), IoError);
 }
 
+TEST(FibersCsv, DiametersReadFromAListOrAnArrangement) {
+  TempDir dir;
+  write_text(dir.file("d.csv"), "d\n6.8\n\n7.25\n");
+  EXPECT_EQ(read_diameters_csv(dir.file("d.csv")), (std::vector<double>{6.8, 7.25}));
+  // What write_fibers_csv writes reads back as its d column, every bit.
+  const std::vector<double> diameters{0.1, 1.0 / 3, 7e-6};
+  write_fibers_csv(dir.file("fibers.csv"), {{0.5, 0.25}, {0.1, 0.9}, {0.3, 0.3}}, diameters);
+  EXPECT_EQ(read_diameters_csv(dir.file("fibers.csv")), diameters);
+  const std::pair<const char*, const char*> cases[] = {
+      {"d\n", "holds no diameters"},
+      {"x,y,r\n0.1,0.2,0.3\n", ":1: expected the header 'd' or 'x,y,d'"},
+      {"d\n7\n0\n", ":3: a diameter must be positive"},
+      {"d\n7,8\n", ":2: unexpected text"},
+      {"x,y,d\n0.1,0.2,-7\n", ":2: a diameter must be positive"},
+  };
+  for (const auto& [text, says] : cases) {
+    write_text(dir.file("bad.csv"), text);
+    try {
+      read_diameters_csv(dir.file("bad.csv"));
+      ADD_FAILURE() << "accepted: " << text;
+    } catch (const InvalidInput& e) {
+      EXPECT_NE(std::string(e.what()).find(says), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_THROW(read_diameters_csv(dir.file("missing.csv")), IoError);
+}
+
 // A packing that does not fit the box or the radius asked for: the message says what to
 // give in the library's terms (no command-line flags), and names the parameter to change
 // so that a front end can add its own name for it.

@@ -85,7 +85,7 @@ std::size_t rve_fiber_count(const RveSpec& spec);
 /// limit) `tuning.reached` is false and the result is the closest arrangement reached,
 /// still conflict-free and maximal. Unequal fibers: the diameters are drawn, equal
 /// fibers of their mean square diameter are made so, then grown to their diameters (in
-/// ten steps, each pair pushed apart when it comes too close) and moved into any room
+/// five steps, each pair pushed apart when it comes too close) and moved into any room
 /// left for the smallest fiber. Throws InvalidInput when they jam or room is left: there
 /// is then no valid arrangement to return (the message asks for a lower fraction, a
 /// smaller gap or spread, or another seed).
