@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <numeric>
 #include <string>
@@ -23,8 +24,10 @@ constexpr int kGrowthSteps = 5;
 // Pushes allowed per fiber, for each growth step and for filling the room left, before
 // the fibers count as jammed (a few to 30 are usual).
 constexpr std::size_t kPushesPerFiber = 400;
-// Rounds of moving fibers into the room left for the smallest fiber (under 10 are usual).
+// Rounds of moving fibers into the room left for the smallest fiber (under 10 are usual),
+// and how many may pass without fewer corners of room than the fewest yet.
 constexpr int kFillRounds = 100;
+constexpr int kFillPatience = 20;
 // A fiber bounding room moves toward it by this share of the smallest half distance a
 // round: far enough to close the room in a few rounds, near enough not to open much behind.
 constexpr double kFillStep = 0.125;
@@ -117,22 +120,23 @@ bool push_apart(const PeriodicBox& cell, const std::vector<double>& half, Packin
 
 // Moves each fiber bounding room left for the smallest fiber toward that room's corners,
 // pushing aside what it meets, until no room is left. False if room is left after
-// kFillRounds rounds, or the fibers jam.
+// kFillRounds rounds or kFillPatience rounds without progress, or the fibers jam.
 bool fill_room(const PeriodicBox& cell, const std::vector<double>& half, Packing& index, Rng& rng) {
   const double smallest = *std::min_element(half.begin(), half.end());
   std::vector<double> reach(half.size());
   for (std::size_t i = 0; i < half.size(); ++i) reach[i] = half[i] + smallest;
   std::vector<Corner> corners;
   std::vector<DiskId> moved;
-  std::size_t budget = kPushesPerFiber * half.size();
-  for (int round = 0; round <= kFillRounds; ++round) {
+  std::size_t budget = kPushesPerFiber * half.size(), fewest = SIZE_MAX;
+  for (int round = 0, best = 0; round <= kFillRounds; ++round) {
     std::vector<Vec2> centers(half.size());
     for (std::size_t i = 0; i < half.size(); ++i) centers[i] = index.center(static_cast<DiskId>(i));
     const Packing cover = index_of(cell, centers, reach);
     corners.clear();
     for (DiskId i = 0; i < half.size(); ++i) corners_on_circle(cover, i, corners);
     if (corners.empty()) return true;
-    if (round == kFillRounds) return false;
+    if (corners.size() < fewest) fewest = corners.size(), best = round;
+    if (round == kFillRounds || round - best > kFillPatience) return false;
     moved.clear();
     for (const Corner& corner : corners) {
       for (const DiskId f : {corner.a, corner.b}) {
