@@ -139,6 +139,13 @@ sed -n 2p q.off | grep -qE "^[0-9]+ $((2 * n)) 0$" && pass=$((pass + 1)) || { ec
 expect mesh-obj 0 "-> q.obj" -- "$bin" mesh q.csv --radius 0.05 --output q.obj
 expect mesh-vtk 0 "-> q.vtk" -- "$bin" mesh q.csv --radius 0.05 --output q.vtk
 head -n 1 q.vtk | grep -qx "# vtk DataFile Version 3.0" && pass=$((pass + 1)) || { echo "FAIL VTK header"; fails=$((fails + 1)); }
+if /usr/bin/python3 -c "import meshio" 2>/dev/null; then  # meshio reads it (it refuses legacy POLYDATA)
+  /usr/bin/python3 -c "
+import meshio
+m = meshio.read('q.vtk')
+assert [c.type for c in m.cells] == ['triangle'] and len(m.point_data['disk_id']) == len(m.points), m
+" && pass=$((pass + 1)) || { echo "FAIL VTK read by meshio"; fails=$((fails + 1)); }
+fi
 expect mesh-ply 0 "-> q.ply" -- "$bin" mesh q.csv --radius 0.05 --output q.ply
 sed -n 4p q.ply | grep -qE "^element vertex [0-9]+$" && pass=$((pass + 1)) || { echo "FAIL mesh PLY header"; fails=$((fails + 1)); }
 expect mesh-bad-extension 2 "supported: \.off, \.obj, \.ply, \.vtk" -- "$bin" mesh q.csv --radius 0.05 --output q.xyz
@@ -305,6 +312,16 @@ expect features-default 0 "^sample: [0-9]+ disks \([1-9][0-9]* on feature curves
 expect features-read 0 "^report: [0-9]+ disks \([1-9][0-9]* on feature curves\), .*maximal, conflict-free; mesh: .*manifold yes, genus 0" -- "$bin" report fd.csv --domain "$fandisk" --radius 0.02
 expect features-mesh 0 "^mesh: [0-9]+ disks, .* triangles \(restricted Delaunay\), [1-9][0-9]* edges along feature curves, manifold yes, genus 0" -- "$bin" mesh fd.csv --domain "$fandisk" --radius 0.02 --output fd.obj
 grep -q "^l [0-9]* [0-9]*$" fd.obj && pass=$((pass + 1)) || { echo "FAIL feature edges as OBJ lines"; fails=$((fails + 1)); }
+expect features-mesh-vtk 0 "edges along feature curves" -- "$bin" mesh fd.csv --domain "$fandisk" --radius 0.02 --output fd.vtk
+if /usr/bin/python3 -c "import meshio" 2>/dev/null; then  # triangles and the feature edges as lines, as in the OBJ
+  /usr/bin/python3 -c "
+import meshio
+m = meshio.read('fd.vtk')
+lines = sum(1 for l in open('fd.obj') if l.startswith('l '))
+faces = sum(1 for l in open('fd.obj') if l.startswith('f '))
+assert [(c.type, len(c.data)) for c in m.cells] == [('triangle', faces), ('line', lines)], m
+" && pass=$((pass + 1)) || { echo "FAIL surface VTK with feature lines read by meshio"; fails=$((fails + 1)); }
+fi
 expect surface-auto 0 "^sample: [0-9]+ disks \([1-9][0-9]* on feature curves\), .*sizing thickness sizing min\(0\.05, 0\.45 thickness, 0\.9 curve gap\) graded at 0\.2, smallest 0\.0141 near \(0\.442, 0\.224, -0\.0794\)" -- "$bin" sample --domain "$fandisk" --sizing auto:0.05 --output fa.csv
 expect surface-auto-report 0 "^report: .*maximal, conflict-free; mesh: .*manifold yes, genus 0" -- "$bin" report fa.csv --domain "$fandisk" --sizing auto:0.05
 expect features-none 0 "^sample: [0-9]+ disks, eta .*genus 0, closed, area" -- "$bin" sample --domain "$fandisk" --radius 0.02 --features none
@@ -377,7 +394,7 @@ expect surface-angle 2 "angle injection triangulates" -- "$bin" tune --domain "$
 expect surface-crystal 0 "reached.*phase crystal ejection" -- "$bin" tune --domain "$eight" --radius 0.045 --input e.csv --target-fraction 0.5 --method crystal-eject
 absent surface-angle-output never.csv
 expect surface-mesh-vtk 0 "e4\.vtk" -- "$bin" mesh e4.csv --domain "$eight" --radius 0.045 --output e4.vtk
-grep -qx "DATASET POLYDATA" e4.vtk && pass=$((pass + 1)) || { echo "FAIL surface VTK"; fails=$((fails + 1)); }
+grep -qx "DATASET UNSTRUCTURED_GRID" e4.vtk && pass=$((pass + 1)) || { echo "FAIL surface VTK"; fails=$((fails + 1)); }
 expect surface-mesh-bad-extension 2 "supported: \.off, \.obj, \.ply, \.vtk" -- "$bin" mesh e4.csv --domain "$eight" --radius 0.045 --output never.xyz
 absent surface-mesh-bad-extension-output never.xyz
 { head -n 3 e.csv; echo "0.5,0.5,0.5,0.045"; tail -n +4 e.csv; } >offsurface.csv

@@ -376,7 +376,7 @@ TEST(MeshIo, PlanarMeshInEveryFormat) {
   }
   EXPECT_EQ(faces, m.triangles.size());
   const std::string vtk = text("m.vtk");
-  EXPECT_NE(vtk.find("POLYGONS " + std::to_string(m.triangles.size()) + " "), std::string::npos);
+  EXPECT_NE(vtk.find("CELLS " + std::to_string(m.triangles.size()) + " "), std::string::npos);
   EXPECT_NE(vtk.find("SCALARS disk_id unsigned_int 1\nLOOKUP_TABLE default\n"), std::string::npos);
   const std::string svg = text("m.svg");
   EXPECT_NE(svg.find("<circle"), std::string::npos);

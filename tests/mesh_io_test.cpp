@@ -92,11 +92,14 @@ TEST(MeshIo, VtkHasPointsPolygonsAndDiskIds) {
   text << in.rdbuf();
   const std::string s = text.str();
   EXPECT_EQ(s.rfind("# vtk DataFile Version 3.0\n", 0), 0u);
-  EXPECT_NE(s.find("\nASCII\nDATASET POLYDATA\n"), std::string::npos);
+  // An unstructured grid (meshio reads no polygonal data): the triangles as cells of type 5.
+  EXPECT_NE(s.find("\nASCII\nDATASET UNSTRUCTURED_GRID\n"), std::string::npos);
   EXPECT_NE(s.find("POINTS " + std::to_string(m.vertices.size()) + " double\n"), std::string::npos);
-  EXPECT_NE(s.find("POLYGONS " + std::to_string(m.triangles.size()) + " " +
-                   std::to_string(4 * m.triangles.size()) + "\n"),
+  EXPECT_NE(s.find("CELLS " + std::to_string(m.triangles.size()) + " " + std::to_string(4 * m.triangles.size()) + "\n"),
             std::string::npos);
+  std::string types = "CELL_TYPES " + std::to_string(m.triangles.size()) + "\n";
+  for (std::size_t t = 0; t < m.triangles.size(); ++t) types += "5\n";
+  EXPECT_NE(s.find(types), std::string::npos);
   EXPECT_NE(s.find("POINT_DATA " + std::to_string(m.vertices.size()) +
                    "\nSCALARS disk_id unsigned_int 1\nLOOKUP_TABLE default\n"),
             std::string::npos);
@@ -131,7 +134,7 @@ TEST(MeshIo, EveryFormatServesEveryMeshKind) {
     EXPECT_EQ((Vec3{x, y, z}), p);
   }
   in >> line;
-  EXPECT_EQ(line, "POLYGONS");
+  EXPECT_EQ(line, "CELLS");
   std::size_t n = 0, words = 0;
   in >> n >> words;
   EXPECT_EQ(n, 4u);

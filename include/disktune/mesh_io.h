@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Writing a TriangleMesh or PlanarMesh (and, through surface_mesh.h, a SurfaceMesh): ASCII
-// OFF, OBJ, PLY or legacy VTK (ParaView opens it), chosen by the file's extension, and an SVG picture of the mesh over its packing. Every writer
+// OFF, OBJ, PLY or legacy VTK (an unstructured grid: ParaView, VTK and meshio read it), chosen by the file's extension, and an SVG picture of the mesh over its packing. Every writer
 // goes through write_file_atomically: a failure leaves no partial file.
 #pragma once
 

@@ -75,19 +75,24 @@ void write_view(const std::string& path, const MeshView& mesh) {
             << "\nproperty list uchar int vertex_indices\nend_header\n";
         put_vertices(out, mesh, "");
         return put_triangles(out, mesh, "3 ", 0);
-      case MeshFormat::Vtk:
-        out << "# vtk DataFile Version 3.0\n" << mesh.title << "\nASCII\nDATASET POLYDATA\nPOINTS " << nv << " double\n";
+      case MeshFormat::Vtk: {
+        // An unstructured grid, not polygonal data: both read the same in VTK and
+        // ParaView, and meshio reads only this one. Triangles (cell type 5), then the
+        // feature edges as lines (type 3).
+        const std::size_t nl = mesh.lines ? mesh.lines->size() : 0;
+        out << "# vtk DataFile Version 3.0\n" << mesh.title << "\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS " << nv
+            << " double\n";
         put_vertices(out, mesh, "");
-        out << "POLYGONS " << nt << ' ' << 4 * nt << '\n';
+        out << "CELLS " << nt + nl << ' ' << 4 * nt + 3 * nl << '\n';
         put_triangles(out, mesh, "3 ", 0);
-        if (mesh.lines && !mesh.lines->empty()) {
-          out << "LINES " << mesh.lines->size() << ' ' << 3 * mesh.lines->size() << '\n';
-          for (const auto& l : *mesh.lines) out << "2 " << l[0] << ' ' << l[1] << '\n';
-        }
+        for (std::size_t k = 0; k < nl; ++k) out << "2 " << (*mesh.lines)[k][0] << ' ' << (*mesh.lines)[k][1] << '\n';
+        out << "CELL_TYPES " << nt + nl << '\n';
+        for (std::size_t k = 0; k < nt + nl; ++k) out << (k < nt ? "5\n" : "3\n");
         if (!mesh.vertex_disk) return;
         out << "POINT_DATA " << nv << "\nSCALARS disk_id unsigned_int 1\nLOOKUP_TABLE default\n";
         for (const DiskId id : *mesh.vertex_disk) out << id << '\n';
         return;
+      }
     }
   });
 }
