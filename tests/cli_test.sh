@@ -34,6 +34,9 @@ absent() {  # absent NAME FILE
 
 expect help 0 "sample" -- "$bin" --help
 expect sample-help 0 "--radius" -- "$bin" sample --help
+expect version 0 "^disktune [0-9]+\.[0-9]+\.[0-9]+$" -- "$bin" --version
+[ "$("$bin" --version 2>/dev/null)" = "$(sed -n 's/^project(disktune VERSION \([0-9.]*\).*/disktune \1/p' "$data/../CMakeLists.txt")" ] &&
+  pass=$((pass + 1)) || { echo "FAIL --version on stdout, the project's version"; fails=$((fails + 1)); }
 expect sample 0 "^sample: [0-9]+ disks, eta = 0\.5[0-9]+" -- "$bin" sample --radius 0.05 --seed 3 --output a.csv --svg a.svg
 head -n 1 a.csv | grep -qx "x,y,r" && pass=$((pass + 1)) || { echo "FAIL header"; fails=$((fails + 1)); }
 "$bin" sample --radius 0.05 --seed 3 --output b.csv >/dev/null

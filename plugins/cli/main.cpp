@@ -5,6 +5,7 @@
 #include <csignal>
 #include <iostream>
 #include <new>
+#include <string>
 
 #include "commands.h"
 #include "disktune/errors.h"
@@ -44,6 +45,7 @@ int main(int argc, char** argv) {
       "disktune: maximal Poisson-disk packings whose density is tuned by disk injection and "
       "ejection.\nWith no arguments, runs the built-in demo (writes disktune-demo/)."};
   app.require_subcommand(0, 1);
+  app.set_version_flag("--version", std::string("disktune ") + DISKTUNE_VERSION);
   Action action = run_demo;
   add_sample_command(app, action);
   add_tune_command(app, action);
@@ -58,6 +60,8 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
     std::cerr << "disktune: " << e.what() << "\nRun 'disktune --help' for the options.\n";
