@@ -159,6 +159,11 @@ expect mesh-same-center 2 "coincide" -- "$bin" mesh twice.csv --radius 0.05 --ou
 absent mesh-refused-output never.off
 expect report 0 "^report: $n disks, eta = 0\.5[0-9]+, rho = [0-9.]+, maximal, conflict-free" -- "$bin" report q.csv --radius 0.05 --json q.json --svg q.svg
 grep -q '"local_beta"' q.json && tail -n 1 q.svg | grep -qx "</svg>" && pass=$((pass + 1)) || { echo "FAIL report files"; fails=$((fails + 1)); }
+# "-" is standard output; the summary lines go to standard error, so data pipes cleanly
+"$bin" report q.csv --radius 0.05 --json - 2>report.err | /usr/bin/python3 -c "import json, sys; assert 'local_beta' in json.load(sys.stdin)" &&
+  grep -q "^report: $n disks" report.err && pass=$((pass + 1)) || { echo "FAIL report --json - on stdout"; fails=$((fails + 1)); }
+"$bin" sample --radius 0.05 --seed 3 -o - 2>sample.err >piped.csv && cmp -s piped.csv a.csv && grep -q "^sample: " sample.err && [ ! -e ./- ] &&
+  pass=$((pass + 1)) || { echo "FAIL sample -o - on stdout, same CSV, no file named -"; fails=$((fails + 1)); }
 expect report-rect 0 "maximal, conflict-free" -- "$bin" report c.csv --width 2 --height 0.5 --radius 0.1
 expect report-outside 2 "outside the 1 x 1 box" -- "$bin" report c.csv --radius 0.1 --json never.json
 absent report-refused-output never.json

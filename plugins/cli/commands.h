@@ -54,6 +54,9 @@ double memory_size(const std::string& text);
 CLI::Validator whole_number(std::uint64_t low, std::uint64_t high, const std::string& what);
 /// The --seed option of sample, tune and sweep: 0 to 2^64 - 1, nothing else.
 CLI::Option* add_seed_option(CLI::App* cmd, std::uint64_t& seed);
+/// Makes `option` an output file that may be given as "-": standard output (written
+/// straight, as any device; the summary lines go to standard error anyway).
+CLI::Option* writes_file(CLI::Option* option);
 
 void add_sample_command(CLI::App& app, Action& action);
 void add_tune_command(CLI::App& app, Action& action);

@@ -36,7 +36,7 @@ int run_mesh(const MeshArgs& args) {
     const PlanarMesh mesh = constrained_delaunay(packing, boundary_loops(packing, *domain.planar));
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     write_mesh(args.output, mesh);
-    std::printf("mesh: %zu disks, %zu triangles (constrained Delaunay, holes removed), %.3f s -> %s\n",
+    std::fprintf(stderr, "mesh: %zu disks, %zu triangles (constrained Delaunay, holes removed), %.3f s -> %s\n",
                 mesh.vertices.size(), mesh.triangles.size(), seconds, args.output.c_str());
     return kExitOk;
   }
@@ -44,7 +44,7 @@ int run_mesh(const MeshArgs& args) {
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   write_mesh(args.output, mesh);
-  std::printf(
+  std::fprintf(stderr, 
       "mesh: %zu disks, %zu triangles, %zu vertices (%zu copies across the seam), "
       "%.3f s -> %s\n",
       mesh.disk_count, mesh.triangles.size(), mesh.vertices.size(),
@@ -66,9 +66,9 @@ void add_mesh_command(CLI::App& app, Action& action) {
   cmd->add_option("points", args->input, "CSV file of the packing (header x,y,r; x,y,z,r on a surface)")
       ->required();
   add_domain_options(cmd, args->domain);
-  cmd->add_option("--output,-o", args->output,
+  writes_file(cmd->add_option("--output,-o", args->output,
                   "Mesh file to write: .off, .obj, .ply or .vtk (all ASCII; .vtk is legacy VTK, "
-                  "which ParaView opens), on every domain")
+                  "which ParaView opens), on every domain"))
       ->required();
   cmd->callback([args, &action] { action = [args] { return run_mesh(*args); }; });
 }

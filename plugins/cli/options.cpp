@@ -35,6 +35,10 @@ CLI::Option* add_seed_option(CLI::App* cmd, std::uint64_t& seed) {
       ->capture_default_str();
 }
 
+CLI::Option* writes_file(CLI::Option* option) {
+  return option->transform([](std::string path) { return path == "-" ? std::string("/dev/stdout") : path; });
+}
+
 double memory_size(const std::string& text) {
   // Digits with an optional fraction, then an optional unit: K, M, G or T, alone or
   // followed by B or iB (binary either way, as ulimit and free count).

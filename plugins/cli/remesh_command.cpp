@@ -20,7 +20,7 @@ void add_remesh_command(CLI::App& app, Action& action) {
   cmd->add_option("--vertices,-n", job->vertices, "The vertex count of the new mesh (at least 4)")
       ->check(whole_number(4, 1'000'000'000, "--vertices"))
       ->required();
-  cmd->add_option("--output,-o", job->output, "Mesh file to write: .off, .obj, .ply or .vtk")->required();
+  writes_file(cmd->add_option("--output,-o", job->output, "Mesh file to write: .off, .obj, .ply or .vtk"))->required();
   cmd->add_option("--features", job->features,
                   "Sharp edges to keep: edges whose triangles' normals differ by more than this many "
                   "degrees (default 60), or 'none'")
@@ -30,7 +30,7 @@ void add_remesh_command(CLI::App& app, Action& action) {
                   "closer to equilateral, and cost time")
       ->check(whole_number(0, 10000, "--relax"))
       ->capture_default_str();
-  cmd->add_option("--json", job->json, "Write the report (topology, angles, edges, Hausdorff distance) as JSON");
+  writes_file(cmd->add_option("--json", job->json, "Write the report (topology, angles, edges, Hausdorff distance) as JSON"));
   add_seed_option(cmd, job->seed);
   add_memory_option(cmd, job->max_memory);
   cmd->callback([job, &action] { action = [job] { return run_surface_remesh(*job); }; });

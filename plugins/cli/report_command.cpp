@@ -52,7 +52,7 @@ int run_planar_report(const ReportArgs& args, const CommandDomain& domain) {
   const PlanarQualityReport q = measure_planar_quality(packing, mesh, domain.area());
   if (!args.json.empty()) write_quality_json(args.json, q);
   if (!args.svg.empty()) write_mesh_svg(args.svg, mesh, packing);
-  std::printf(
+  std::fprintf(stderr, 
       "report: %zu disks (%zu on the boundary), eta = %.4f, rho = %.4f, %s, %s, distance >= "
       "%.4f r; angles %.2f..%.2f deg (mean |a-60| %.2f, %.1f %% in [50,70]; interior "
       "triangles %s, boundary triangles %s), beta <= %.4f%s%s\n",
@@ -87,7 +87,7 @@ int run_report(const ReportArgs& args) {
     options.window = args.spectrum_window;
     spectrum = measure_spectrum(packing, options);
     const std::chrono::duration<double> took = std::chrono::steady_clock::now() - start;
-    std::printf(
+    std::fprintf(stderr, 
         "spectrum: window |k| < %d (rings to frequency %.2f), peak power %.2f at %.3f, "
         "effective Nyquist %.3f, %.2f s\n",
         spectrum->window, spectrum->reach(), spectrum->peak_power, spectrum->peak_frequency,
@@ -99,7 +99,7 @@ int run_report(const ReportArgs& args) {
   if (!args.json.empty()) write_quality_json(args.json, q, s);
   if (!args.png_dir.empty()) write_report_pictures(args.png_dir, q, s);
   if (!args.svg.empty()) write_mesh_svg(args.svg, mesh, packing);
-  std::printf(
+  std::fprintf(stderr, 
       "report: %zu disks, eta = %.4f, rho = %.4f, %s, %s, distance >= %.4f r, "
       "coverage <= %.4f r, angles %.2f..%.2f deg (mean |a-60| %.2f), beta <= %.4f%s%s\n",
       q.count, q.area_fraction, q.relative_radius, q.maximal ? "maximal" : "NOT maximal",
@@ -122,8 +122,8 @@ void add_report_command(CLI::App& app, Action& action) {
   cmd->add_option("points", args->input, "CSV file of the packing (header x,y,r; x,y,z,r on a surface)")
       ->required();
   add_domain_options(cmd, args->domain);
-  cmd->add_option("--json", args->json, "Write the full report (with histograms) as JSON");
-  cmd->add_option("--svg", args->svg, "Draw the mesh over the disks (at r/2) as an SVG picture");
+  writes_file(cmd->add_option("--json", args->json, "Write the full report (with histograms) as JSON"));
+  writes_file(cmd->add_option("--svg", args->svg, "Draw the mesh over the disks (at r/2) as an SVG picture"));
   cmd->add_option("--png-dir", args->png_dir,
                   "Write spectrum.png, radial_mean.png, anisotropy.png, angles.png and edges.png "
                   "into this existing folder");

@@ -107,15 +107,15 @@ void write_mesh(const RveJob& job, const Rve& rve, std::size_t k) {
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::size_t in_fibers = 0;
   for (const std::uint32_t m : mesh.material) in_fibers += m > 0;
-  std::printf("rve mesh: %zu nodes, %zu triangles (%zu in fibers), angles %.1f-%.1f deg, radius ratio max %.2f "
+  std::fprintf(stderr, "rve mesh: %zu nodes, %zu triangles (%zu in fibers), angles %.1f-%.1f deg, radius ratio max %.2f "
               "mean %.3f, %zu + %zu periodic node pairs, sides %.3g D clear of fiber tangents, %.3f s",
               mesh.nodes.size(), mesh.triangles.size(), in_fibers, mesh.angles.min, mesh.angles.max,
               mesh.radius_ratio.max, mesh.radius_ratio.mean, mesh.left.size() + 2, mesh.bottom.size() + 2,
               mesh.side_clearance / rve.diameter, seconds);
   for (const std::string* file : {&job.msh, &job.inp}) {
-    if (!file->empty()) std::printf(" -> %s", output_of(job, *file, k).c_str());
+    if (!file->empty()) std::fprintf(stderr, " -> %s", output_of(job, *file, k).c_str());
   }
-  std::printf("\n");
+  std::fprintf(stderr, "\n");
   if (!job.msh.empty()) write_rve_msh(output_of(job, job.msh, k), mesh);
   if (!job.inp.empty()) write_rve_inp(output_of(job, job.inp, k), mesh);
 }
@@ -156,24 +156,24 @@ int run_rve(const RveJob& given) {
       double spread = 0;
       for (const double d : rve.diameters) spread += (d - rve.diameter) * (d - rve.diameter);
       spread = std::sqrt(spread / static_cast<double>(rve.diameters.size())) / rve.diameter;
-      std::printf("rve: %zu fibers, vf %.4f, diameters %g-%g (mean %g, cv %.3f), gap %g, cell %g x %g, "
+      std::fprintf(stderr, "rve: %zu fibers, vf %.4f, diameters %g-%g (mean %g, cv %.3f), gap %g, cell %g x %g, "
                   "from a sample of %zu equal ones, seed %llu",
                   rve.centers.size(), rve.fiber_fraction, *least, *most, rve.diameter, spread, rve.gap,
                   rve.cell.width(), rve.cell.height(), rve.sample_centers.size(),
                   static_cast<unsigned long long>(job.spec.seed + k));
     } else {
-      std::printf("rve: %zu fibers (%s%zu), vf %.4f, diameter %g, gap %g, cell %g x %g, from a sample of %zu, "
+      std::fprintf(stderr, "rve: %zu fibers (%s%zu), vf %.4f, diameter %g, gap %g, cell %g x %g, from a sample of %zu, "
                   "phase %s, seed %llu",
                   rve.centers.size(), rve.tuning.reached ? "as asked: " : "NOT reached, asked ", count,
                   rve.fiber_fraction, rve.diameter, rve.gap, rve.cell.width(), rve.cell.height(),
                   rve.sample_centers.size(), to_string(rve.tuning.last_phase).c_str(),
                   static_cast<unsigned long long>(job.spec.seed + k));
     }
-    if (rves.size() == 1) std::printf(", %.3f s", seconds);
-    std::printf(" -> %s\n", output_of(job, job.output, k).c_str());
+    if (rves.size() == 1) std::fprintf(stderr, ", %.3f s", seconds);
+    std::fprintf(stderr, " -> %s\n", output_of(job, job.output, k).c_str());
     if (meshing) write_mesh(job, rve, k);
   }
-  if (rves.size() > 1) std::printf("rve: %zu realizations, %.3f s\n", rves.size(), seconds);
+  if (rves.size() > 1) std::fprintf(stderr, "rve: %zu realizations, %.3f s\n", rves.size(), seconds);
   if (!job.stats.empty() || !job.png_dir.empty()) write_statistics(job, rves);
   if (!reached) {
     std::fprintf(stderr,
@@ -214,24 +214,24 @@ void add_rve_command(CLI::App& app, Action& action) {
   vf->excludes(fibers);
   cmd->add_option("--width", job->spec.width, "Width W of the periodic cell")->capture_default_str();
   cmd->add_option("--height", job->spec.height, "Height H of the periodic cell")->capture_default_str();
-  cmd->add_option("--output,-o", job->output, "CSV file to write (header x,y,d)")->required();
-  cmd->add_option("--stats", job->stats,
+  writes_file(cmd->add_option("--output,-o", job->output, "CSV file to write (header x,y,d)"))->required();
+  writes_file(cmd->add_option("--stats", job->stats,
                   "Also write the arrangement's statistics as JSON: nearest-neighbour distances (1st to "
                   "6th) and orientation, Ripley's K and L, g(r), psi6, Voronoi cell areas, the local fiber "
                   "fraction in windows 2 to 16 D wide; beside them the "
                   "same for the maximal sample it was tuned from (random sequential adsorption), complete "
-                  "spatial randomness and the hexagonal lattice");
+                  "spatial randomness and the hexagonal lattice"));
   cmd->add_option("--png-dir", job->png_dir,
                   "Also draw into this existing folder: cell.png (the fibers), pair_correlation.png and "
                   "ripley_l.png (L(r) - r; blue the arrangement, orange the maximal sample it was tuned "
                   "from), nearest.png and psi6_local.png (histograms); of the first realization");
-  cmd->add_option("--msh", job->msh,
+  writes_file(cmd->add_option("--msh", job->msh,
                   "Also write a periodic finite-element mesh of fibers and matrix as Gmsh MSH 4.1: "
                   "physical groups matrix, fibers, 'fiber K', left, right, bottom, top, corners; the "
-                  "right and top sides periodic copies of the left and bottom, node for node");
-  cmd->add_option("--inp", job->inp,
+                  "right and top sides periodic copies of the left and bottom, node for node"));
+  writes_file(cmd->add_option("--inp", job->inp,
                   "Also write the mesh as Abaqus input: CPE3 triangles, element sets MATRIX, FIBERS, "
-                  "FIBER-K, node sets LEFT/RIGHT and BOTTOM/TOP in periodic pairs, CORNER-1..4");
+                  "FIBER-K, node sets LEFT/RIGHT and BOTTOM/TOP in periodic pairs, CORNER-1..4"));
   auto* segments = cmd->add_option("--fiber-segments", job->mesh.fiber_segments, "Segments of a fiber's boundary in the mesh")
       ->check(whole_number(6, 10000, "--fiber-segments"))
       ->capture_default_str();

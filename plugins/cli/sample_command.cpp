@@ -25,7 +25,7 @@ int run_sample(const SampleJob& job) {
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (!job.output.empty()) write_points_csv(job.output, packing);
   if (!job.svg.empty()) write_packing_svg(job.svg, packing);
-  std::printf("sample: %zu disks, %s, %.3f s (%s, %s)%s%s\n", packing.size(),
+  std::fprintf(stderr, "sample: %zu disks, %s, %.3f s (%s, %s)%s%s\n", packing.size(),
               domain.density_text(packing.size()).c_str(), seconds, domain.radius_text().c_str(),
               domain.describe().c_str(), job.output.empty() ? "" : " -> ", job.output.c_str());
   return kExitOk;
@@ -72,8 +72,8 @@ void add_sample_command(CLI::App& app, Action& action) {
   job->domain.guarded = true;
   add_memory_option(cmd, job->domain.max_memory);
   add_seed_option(cmd, job->seed);
-  cmd->add_option("--output,-o", job->output, "CSV file to write (header x,y,r; x,y,z,r on a surface)");
-  cmd->add_option("--svg", job->svg, "Also draw the packing as an SVG picture (not on a surface)");
+  writes_file(cmd->add_option("--output,-o", job->output, "CSV file to write (header x,y,r; x,y,z,r on a surface)"));
+  writes_file(cmd->add_option("--svg", job->svg, "Also draw the packing as an SVG picture (not on a surface)"));
   cmd->callback([job, &action] { action = [job] { return run_sample(*job); }; });
 }
 

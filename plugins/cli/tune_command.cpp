@@ -107,7 +107,7 @@ TuneResult tune_with_progress(std::size_t start, std::size_t target, Method meth
 
 int report_tune(std::size_t start, const TuneResult& res, const std::string& density,
                 double seconds, const std::string& where, const std::string& output) {
-  std::printf("tune: %zu -> %zu disks (target %zu%s), %s, phase %s, %.3f s%s%s%s\n", start,
+  std::fprintf(stderr, "tune: %zu -> %zu disks (target %zu%s), %s, phase %s, %.3f s%s%s%s\n", start,
               res.count, res.target, res.reached ? ", reached" : ", NOT reached", density.c_str(),
               to_string(res.last_phase).c_str(), seconds, where.c_str(),
               output.empty() ? "" : " -> ", output.c_str());
@@ -158,8 +158,8 @@ void add_tune_command(CLI::App& app, Action& action) {
                   "unchanged; the triangles of the mesh come closer to equilateral, the packing more "
                   "regular (remesh uses 30)")
       ->check(whole_number(0, 10000, "--relax"));
-  cmd->add_option("--output,-o", args->output, "CSV file to write (header x,y,r; x,y,z,r on a surface)");
-  cmd->add_option("--svg", args->svg, "Also draw the packing (frozen crystal disks in blue)");
+  writes_file(cmd->add_option("--output,-o", args->output, "CSV file to write (header x,y,r; x,y,z,r on a surface)"));
+  writes_file(cmd->add_option("--svg", args->svg, "Also draw the packing (frozen crystal disks in blue)"));
   cmd->callback([args, cmd, &action] {
     if (cmd->count("--target-count") + cmd->count("--target-fraction") + cmd->count("--target-rho") != 1) {
       throw CLI::ValidationError("tune", "give one target: --target-count, --target-fraction or --target-rho");
