@@ -159,6 +159,10 @@ expect mesh-same-center 2 "coincide" -- "$bin" mesh twice.csv --radius 0.05 --ou
 absent mesh-refused-output never.off
 expect report 0 "^report: $n disks, eta = 0\.5[0-9]+, rho = [0-9.]+, maximal, conflict-free" -- "$bin" report q.csv --radius 0.05 --json q.json --svg q.svg
 grep -q '"local_beta"' q.json && tail -n 1 q.svg | grep -qx "</svg>" && pass=$((pass + 1)) || { echo "FAIL report files"; fails=$((fails + 1)); }
+# Without --radius or --sizing, mesh, report and tune take the one radius the CSV holds
+expect report-radius-from-csv 0 "^report: $n disks, eta = 0\.5[0-9]+, .*maximal, conflict-free" -- "$bin" report q.csv
+expect mesh-radius-from-csv 0 "^mesh: $n disks" -- "$bin" mesh q.csv -o from-csv.off
+expect tune-radius-from-csv 0 "^tune: $n -> 300 disks" -- "$bin" tune -i q.csv --target-count 300 -o from-csv.csv
 # "-" is standard output; the summary lines go to standard error, so data pipes cleanly
 "$bin" report q.csv --radius 0.05 --json - 2>report.err | /usr/bin/python3 -c "import json, sys; assert 'local_beta' in json.load(sys.stdin)" &&
   grep -q "^report: $n disks" report.err && pass=$((pass + 1)) || { echo "FAIL report --json - on stdout"; fails=$((fails + 1)); }
@@ -233,6 +237,8 @@ expect planar-report-png 2 "periodic box only" -- "$bin" report p8.csv --domain 
 expect planar-big-radius 0 "note: r = 0.5 does not fit this domain .*--sizing auto:0.5" -- "$bin" sample --domain hole.poly --radius 0.5 --output big.csv
 expect planar-big-radius-report 0 "maximal, conflict-free" -- "$bin" report big.csv --domain hole.poly --radius 0.5
 expect planar-auto 0 "feature sizing min\(0.05, 0.45 lfs graded at 0.2\)" -- "$bin" sample --domain hole.poly --sizing auto:0.05 --output auto.csv
+expect radii-differ-sample 0 "^sample: " -- "$bin" sample --domain hole.poly --sizing "0.04*(1+0.3*x)" --output graded.csv
+expect radii-differ 2 "the disks in 'graded\.csv' have radii from 0\.0[0-9]+ to 0\.0[0-9]+: give the sizing they were made with \(--sizing SPEC\)" -- "$bin" report graded.csv --domain hole.poly
 expect planar-auto-bad 2 "expected auto:RMAX or auto:RMAX,G" -- "$bin" sample --domain hole.poly --sizing auto:x --output z.csv
 # A hole 1e-10 from the outer corner: no feature sizing can hold it; refused, not a hang.
 sed 's/^5 0.3 0.3$/5 1e-10 1e-10/; s/^6 0.7 0.3$/6 0.7 1e-10/; s/^8 0.3 0.7$/8 1e-10 0.7/' hole.poly > touching.poly
@@ -401,6 +407,7 @@ expect surface-report-png 2 "periodic box only" -- "$bin" report e4.csv --domain
 expect surface-angle 2 "angle injection triangulates" -- "$bin" tune --domain "$eight" --radius 0.045 --input e.csv --target-count 420 --method angle --output never.csv
 expect surface-crystal 0 "reached.*phase crystal ejection" -- "$bin" tune --domain "$eight" --radius 0.045 --input e.csv --target-fraction 0.5 --method crystal-eject
 absent surface-angle-output never.csv
+expect surface-report-radius-from-csv 0 "^report: [0-9]+ disks, .*maximal, conflict-free; mesh: .*manifold yes" -- "$bin" report e4.csv --domain "$eight"
 expect surface-mesh-vtk 0 "e4\.vtk" -- "$bin" mesh e4.csv --domain "$eight" --radius 0.045 --output e4.vtk
 grep -qx "DATASET UNSTRUCTURED_GRID" e4.vtk && pass=$((pass + 1)) || { echo "FAIL surface VTK"; fails=$((fails + 1)); }
 expect surface-mesh-bad-extension 2 "supported: \.off, \.obj, \.ply, \.vtk" -- "$bin" mesh e4.csv --domain "$eight" --radius 0.045 --output never.xyz

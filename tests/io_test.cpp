@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <gtest/gtest.h>
 
+#include <array>
+
 #include <csignal>
 #include <filesystem>
 #include <fstream>
@@ -63,6 +65,18 @@ TEST(PointsCsv, BadContentNamesTheLine) {
     }
   }
   EXPECT_THROW(read_points_csv(dir.file("missing.csv")), IoError);
+}
+
+TEST(PointsCsv, RadiusRangeOfPlanarAndSurfaceFiles) {
+  TempDir dir;
+  write_text(dir.file("p.csv"), "x,y,r\n0.1,0.2,0.05\n0.3,0.4,0.03\n0.5,0.5,0.04\n");
+  EXPECT_EQ(read_radius_range(dir.file("p.csv")), (std::array<double, 2>{0.03, 0.05}));
+  write_text(dir.file("s.csv"), "x,y,z,r\n0.1,0.2,0.3,0.02\n0.3,0.4,0.5,0.02\n");
+  EXPECT_EQ(read_radius_range(dir.file("s.csv")), (std::array<double, 2>{0.02, 0.02}));
+  write_text(dir.file("bad.csv"), "x,y,r\n0.1,0.2,0\n");
+  EXPECT_THROW(read_radius_range(dir.file("bad.csv")), InvalidInput);
+  write_text(dir.file("empty.csv"), "x,y,r\n");
+  EXPECT_THROW(read_radius_range(dir.file("empty.csv")), InvalidInput);
 }
 
 TEST(FibersCsv, DiametersReadFromAListOrAnArrangement) {

@@ -3,6 +3,7 @@
 // a failed write never leaves a half-written output behind.
 #pragma once
 
+#include <array>
 #include <functional>
 #include <memory>
 #include <ostream>
@@ -66,6 +67,12 @@ void write_fibers_csv(const std::string& path, const std::vector<Vec2>& centers,
 /// Throws IoError when it cannot be read, InvalidInput "PATH:LINE: ..." for a diameter
 /// that is not finite and positive, other content, or no diameter at all.
 std::vector<double> read_diameters_csv(const std::string& path);
+
+/// The smallest and largest radius in a points CSV, planar or on a surface (header
+/// `x,y,r` or `x,y,z,r`, as the writers here write them). Throws IoError when the file
+/// cannot be read and InvalidInput, naming the line, when its content is wrong or it
+/// holds no disk.
+std::array<double, 2> read_radius_range(const std::string& path);
 
 struct PointRecord {
   double x, y, r;

@@ -126,6 +126,21 @@ bool names_surface(const DomainArgs& args) {
   return false;
 }
 
+DomainArgs with_radius_of(const DomainArgs& args, const std::string& points) {
+  if (args.has_radius || !args.sizing.empty() || points.empty()) return args;
+  const auto [least, most] = read_radius_range(points);
+  if (least != most) {
+    char range[64];
+    std::snprintf(range, sizeof range, "%g to %g", least, most);
+    throw InvalidInput("the disks in '" + points + "' have radii from " + range +
+                       ": give the sizing they were made with (--sizing SPEC)");
+  }
+  DomainArgs out = args;
+  out.radius = least;
+  out.has_radius = true;
+  return out;
+}
+
 CommandDomain open_domain(const DomainArgs& args) {
   const std::string ext = lower_extension(args.kind);
   if (args.kind != "periodic" && ext != ".poly" && ext != ".off" && ext != ".obj" && ext != ".ply" &&

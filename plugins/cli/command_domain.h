@@ -66,6 +66,11 @@ bool names_surface(const DomainArgs& args);
 /// (an angle in degrees, or "none"). Throws InvalidInput for a bad --features.
 std::shared_ptr<const SurfaceDomain> surface_with_features(const DomainArgs& args);
 
+/// `args`, with the radius of the disks in the points file `points` when neither
+/// --radius nor --sizing is given and they all have one radius (the file holds it).
+/// Throws InvalidInput when their radii differ: the sizing must be given.
+DomainArgs with_radius_of(const DomainArgs& args, const std::string& points);
+
 /// Opens the domain named by the options (reads and validates a domain file, parses
 /// and checks the sizing, estimates what a sample needs). Throws InvalidInput unless
 /// exactly one of --radius and --sizing is given, and, for a command that samples or

@@ -22,7 +22,9 @@ struct MeshArgs {
   std::string output;
 };
 
-int run_mesh(const MeshArgs& args) {
+int run_mesh(const MeshArgs& given) {
+  MeshArgs args = given;
+  args.domain = with_radius_of(given.domain, given.input);
   std::vector<NamedFile> inputs = domain_files(args.domain);
   inputs.push_back({"the points file", args.input});
   check_files_apart(inputs, {{"--output", args.output}});

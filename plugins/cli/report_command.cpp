@@ -65,7 +65,9 @@ int run_planar_report(const ReportArgs& args, const CommandDomain& domain) {
   return kExitOk;
 }
 
-int run_report(const ReportArgs& args) {
+int run_report(const ReportArgs& given) {
+  ReportArgs args = given;
+  args.domain = with_radius_of(given.domain, given.input);
   std::vector<NamedFile> inputs = domain_files(args.domain);
   inputs.push_back({"the points file", args.input});
   check_files_apart(inputs, {{"--json", args.json}, {"--svg", args.svg}});

@@ -42,7 +42,9 @@ Method method_named(const std::string& name) {
 
 }  // namespace
 
-int run_tune(const TuneJob& job) {
+int run_tune(const TuneJob& given) {
+  TuneJob job = given;
+  job.domain = with_radius_of(given.domain, given.input);
   std::vector<NamedFile> inputs = domain_files(job.domain);
   inputs.push_back({"--input", job.input});
   check_files_apart(inputs, {{"--output", job.output}, {"--svg", job.svg}}, "--output");

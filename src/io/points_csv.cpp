@@ -104,6 +104,22 @@ void write_fibers_csv(const std::string& path, const std::vector<Vec2>& centers,
   });
 }
 
+std::array<double, 2> read_radius_range(const std::string& path) {
+  const detail::CsvNumbers rows = detail::read_csv_numbers(path, {"x,y,r", "x,y,z,r"});
+  if (rows.rows() == 0) throw InvalidInput("'" + path + "' holds no disks, only a header");
+  std::array<double, 2> range{INFINITY, -INFINITY};
+  for (std::size_t k = 0; k < rows.rows(); ++k) {
+    const double r = rows.at(k, rows.columns - 1);
+    if (!(r > 0)) {
+      std::ostringstream msg;
+      msg << path << ":" << rows.lines[k] << ": radius must be positive, found " << r;
+      throw InvalidInput(msg.str());
+    }
+    range[0] = std::min(range[0], r), range[1] = std::max(range[1], r);
+  }
+  return range;
+}
+
 std::vector<double> read_diameters_csv(const std::string& path) {
   const detail::CsvNumbers rows = detail::read_csv_numbers(path, {"d", "x,y,d"});
   if (rows.rows() == 0) throw InvalidInput("'" + path + "' holds no diameters, only a header");
