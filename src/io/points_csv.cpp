@@ -104,37 +104,38 @@ void write_fibers_csv(const std::string& path, const std::vector<Vec2>& centers,
   });
 }
 
-std::array<double, 2> read_radius_range(const std::string& path) {
-  const detail::CsvNumbers rows = detail::read_csv_numbers(path, {"x,y,r", "x,y,z,r"});
-  if (rows.rows() == 0) throw InvalidInput("'" + path + "' holds no disks, only a header");
-  std::array<double, 2> range{INFINITY, -INFINITY};
-  for (std::size_t k = 0; k < rows.rows(); ++k) {
-    const double r = rows.at(k, rows.columns - 1);
-    if (!(r > 0)) {
-      std::ostringstream msg;
-      msg << path << ":" << rows.lines[k] << ": radius must be positive, found " << r;
-      throw InvalidInput(msg.str());
-    }
-    range[0] = std::min(range[0], r), range[1] = std::max(range[1], r);
-  }
-  return range;
-}
+namespace {
 
-std::vector<double> read_diameters_csv(const std::string& path) {
-  const detail::CsvNumbers rows = detail::read_csv_numbers(path, {"d", "x,y,d"});
-  if (rows.rows() == 0) throw InvalidInput("'" + path + "' holds no diameters, only a header");
+// The last column of a CSV with at least one row, each value positive; `what` names it
+// in the messages ("radius", "a diameter").
+std::vector<double> positive_last_column(const std::string& path, const std::vector<std::string>& headers,
+                                         const std::string& what, const std::string& plural) {
+  const detail::CsvNumbers rows = detail::read_csv_numbers(path, headers);
+  if (rows.rows() == 0) throw InvalidInput("'" + path + "' holds no " + plural + ", only a header");
   std::vector<double> out;
   out.reserve(rows.rows());
   for (std::size_t k = 0; k < rows.rows(); ++k) {
-    const double d = rows.at(k, rows.columns - 1);
-    if (!(d > 0)) {
+    const double v = rows.at(k, rows.columns - 1);
+    if (!(v > 0)) {
       std::ostringstream msg;
-      msg << path << ":" << rows.lines[k] << ": a diameter must be positive, found " << d;
+      msg << path << ":" << rows.lines[k] << ": " << what << " must be positive, found " << v;
       throw InvalidInput(msg.str());
     }
-    out.push_back(d);
+    out.push_back(v);
   }
   return out;
+}
+
+}  // namespace
+
+std::array<double, 2> read_radius_range(const std::string& path) {
+  const std::vector<double> radii = positive_last_column(path, {"x,y,r", "x,y,z,r"}, "radius", "disks");
+  const auto [least, most] = std::minmax_element(radii.begin(), radii.end());
+  return {*least, *most};
+}
+
+std::vector<double> read_diameters_csv(const std::string& path) {
+  return positive_last_column(path, {"d", "x,y,d"}, "a diameter", "diameters");
 }
 
 std::vector<PointRecord> read_points_csv(const std::string& path) {
