@@ -19,10 +19,10 @@ case "$mode" in run | test | bench) ;; *)
 esac
 cd "$(dirname "$0")/.."
 
-packages=(g++ cmake make libcgal-dev libcli11-dev libgtest-dev nlohmann-json3-dev libpng-dev pkgconf libmuparser-dev libopenmesh-dev libeigen3-dev libgmsh-dev)
+packages=(g++ cmake make libcgal-dev libcli11-dev libgtest-dev nlohmann-json3-dev libpng-dev pkgconf libmuparser-dev libopenmesh-dev libeigen3-dev libgmsh-dev pybind11-dev python3-dev python3-numpy)
 # The checking build: clang with libFuzzer and its sanitizer runtimes (not a dependency
 # of the clang package).
-[ "$mode" = test ] && packages+=(clang libclang-rt-14-dev python3-meshio)
+[ "$mode" = test ] && packages+=(clang libclang-rt-14-dev python3-meshio python3-pytest)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -50,7 +50,7 @@ checks() {
   command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
   [ -f "$check/CMakeCache.txt" ] || cmake -S . -B "$check" -DCMAKE_CXX_COMPILER=clang++ \
     -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" \
-    -DDISKTUNE_SANITIZE=ON -DDISKTUNE_FUZZ=ON -DDISKTUNE_BUILD_CLI=OFF -DDISKTUNE_BUILD_BENCH=OFF \
+    -DDISKTUNE_SANITIZE=ON -DDISKTUNE_FUZZ=ON -DDISKTUNE_BUILD_CLI=OFF -DDISKTUNE_BUILD_BENCH=OFF -DDISKTUNE_BUILD_PYTHON=OFF \
     -DDISKTUNE_INSTALL=OFF "${launcher[@]}"
   cmake --build "$check" -j2 --target disktune_tests disktune_fuzz
   # The unit tests but the slowest sweeps (each >= 4 s in Release, about ten times that

@@ -100,7 +100,7 @@ consume "$this" "$work/prefix-$this"
 # 2. The other kind, built from the same sources.
 run "configure disktune as a $other library" \
   "$cmake" -S "$src" -B "$work/build-$other" "${common[@]}" -DBUILD_SHARED_LIBS=$other_flag \
-  -DDISKTUNE_BUILD_TESTS=OFF -DDISKTUNE_BUILD_BENCH=OFF -DDISKTUNE_BUILD_CLI=OFF
+  -DDISKTUNE_BUILD_TESTS=OFF -DDISKTUNE_BUILD_BENCH=OFF -DDISKTUNE_BUILD_CLI=OFF -DDISKTUNE_BUILD_PYTHON=OFF
 run "build disktune as a $other library" "$cmake" --build "$work/build-$other" -j2
 run "install the $other library" "$cmake" --install "$work/build-$other" --prefix "$work/prefix-$other"
 consume "$other" "$work/prefix-$other"
