@@ -166,6 +166,15 @@ expect tune-radius-from-csv 0 "^tune: $n -> 300 disks" -- "$bin" tune -i q.csv -
 # "-" is standard output; the summary lines go to standard error, so data pipes cleanly
 "$bin" report q.csv --radius 0.05 --json - 2>report.err | /usr/bin/python3 -c "import json, sys; assert 'local_beta' in json.load(sys.stdin)" &&
   grep -q "^report: $n disks" report.err && pass=$((pass + 1)) || { echo "FAIL report --json - on stdout"; fails=$((fails + 1)); }
+# Every JSON file says which disktune made it, and how: its version and command line first
+version=$("$bin" --version | awk '{print $2}')
+/usr/bin/python3 -c "
+import json, sys
+j = json.load(open('q.json'))
+assert list(j)[0] == 'disktune' and j['disktune']['version'] == sys.argv[1], j['disktune']
+assert j['disktune']['arguments'] == ['report', 'q.csv', '--radius', '0.05', '--json', 'q.json', '--svg', 'q.svg'], j['disktune']
+" "$version" &&
+  grep -q "^report: $n disks" report.err && pass=$((pass + 1)) || { echo "FAIL report --json - on stdout"; fails=$((fails + 1)); }
 "$bin" sample --radius 0.05 --seed 3 -o - 2>sample.err >piped.csv && cmp -s piped.csv a.csv && grep -q "^sample: " sample.err && [ ! -e ./- ] &&
   pass=$((pass + 1)) || { echo "FAIL sample -o - on stdout, same CSV, no file named -"; fails=$((fails + 1)); }
 expect report-rect 0 "maximal, conflict-free" -- "$bin" report c.csv --width 2 --height 0.5 --radius 0.1

@@ -58,6 +58,15 @@ CLI::Option* add_seed_option(CLI::App* cmd, std::uint64_t& seed);
 /// straight, as any device; the summary lines go to standard error anyway).
 CLI::Option* writes_file(CLI::Option* option);
 
+/// Keeps the command line for the JSON files (main calls it before parsing).
+void remember_invocation(int argc, char** argv);
+/// Writes a JSON object (text that opens with '{') to `path` atomically, with a first
+/// field "disktune": {"version", "arguments"}: the tool and the command line that made
+/// it, so that a report says how to make it again.
+void write_json(const std::string& path, const std::string& object);
+/// `text` as a JSON string, quotes included.
+std::string json_string(const std::string& text);
+
 void add_sample_command(CLI::App& app, Action& action);
 void add_tune_command(CLI::App& app, Action& action);
 void add_mesh_command(CLI::App& app, Action& action);

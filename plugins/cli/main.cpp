@@ -56,6 +56,7 @@ int main(int argc, char** argv) {
   add_rve_command(app, action);
 
   try {
+    remember_invocation(argc, argv);
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);

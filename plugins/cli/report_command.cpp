@@ -50,7 +50,7 @@ int run_planar_report(const ReportArgs& args, const CommandDomain& domain) {
   Packing packing = domain.read(args.input, false);
   const PlanarMesh mesh = constrained_delaunay(packing, boundary_loops(packing, *domain.planar));
   const PlanarQualityReport q = measure_planar_quality(packing, mesh, domain.area());
-  if (!args.json.empty()) write_quality_json(args.json, q);
+  if (!args.json.empty()) write_json(args.json, quality_json(q));
   if (!args.svg.empty()) write_mesh_svg(args.svg, mesh, packing);
   std::fprintf(stderr, 
       "report: %zu disks (%zu on the boundary), eta = %.4f, rho = %.4f, %s, %s, distance >= "
@@ -98,7 +98,7 @@ int run_report(const ReportArgs& given) {
   const TriangleMesh mesh = periodic_delaunay(packing);
   const QualityReport q = measure_quality(packing, mesh, args.domain.radius);
   const Spectrum* s = spectrum ? &*spectrum : nullptr;
-  if (!args.json.empty()) write_quality_json(args.json, q, s);
+  if (!args.json.empty()) write_json(args.json, quality_json(q, s));
   if (!args.png_dir.empty()) write_report_pictures(args.png_dir, q, s);
   if (!args.svg.empty()) write_mesh_svg(args.svg, mesh, packing);
   std::fprintf(stderr, 

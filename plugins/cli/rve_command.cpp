@@ -77,9 +77,9 @@ void write_statistics(const RveJob& job, const std::vector<Rve>& rves) {
   }
   if (job.stats.empty()) return;
   if (rves.size() == 1) {
-    write_fiber_statistics_json(job.stats, fibers[0], samples.empty() ? nullptr : &samples[0], rves[0].gap, job.spec.seed);
+    write_json(job.stats, fiber_statistics_json(fibers[0], samples.empty() ? nullptr : &samples[0], rves[0].gap, job.spec.seed));
   } else {
-    write_fiber_ensemble_json(job.stats, fibers, samples, rves[0].gap, job.spec.seed);
+    write_json(job.stats, fiber_ensemble_json(fibers, samples, rves[0].gap, job.spec.seed));
   }
 }
 

@@ -123,23 +123,6 @@ void warn_topology(const SurfaceMeshCheck& check, const SurfaceDomain& surface, 
   }
 }
 
-std::string json_string(const std::string& text) {
-  std::string out = "\"";
-  for (const unsigned char c : text) {
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += static_cast<char>(c);
-    } else if (c < 0x20) {
-      char buf[8];
-      std::snprintf(buf, sizeof buf, "\\u%04x", c);
-      out += buf;
-    } else {
-      out += static_cast<char>(c);
-    }
-  }
-  return out + "\"";
-}
-
 std::string json_number(double v) {
   if (!std::isfinite(v)) return "null";
   char buf[32];
@@ -257,7 +240,7 @@ int report_without_mesh(const SurfaceReportJob& job, const CommandDomain& domain
   if (!job.json.empty()) {
     const std::string text =
         packing_json(domain, packing, eta, rho, maximal, conflict_free) + "  \"mesh_check\": null,\n  \"mesh\": null\n}\n";
-    write_file_atomically(job.json, [&](std::ostream& out) { out << text; });
+    write_json(job.json, text);
   }
   std::fprintf(stderr, "report: %zu disks%s, eta = %.4f, rho = %.4f, %s, %s; no mesh (a restricted Delaunay mesh needs at "
               "least %zu samples: use a smaller radius)%s%s\n",
@@ -304,7 +287,7 @@ int run_surface_report(const SurfaceReportJob& job) {
       << "  \"mesh_check\": " << mesh_check_json(m.check) << ",\n"
       << "  \"mesh\": " << quality_json(q) << "\n}\n";
     const std::string text = j.str();
-    write_file_atomically(job.json, [&](std::ostream& out) { out << text; });
+    write_json(job.json, text);
   }
   std::fprintf(stderr, 
       "report: %zu disks%s, eta = %.4f, rho = %.4f, %s, %s; mesh: %zu vertices, %zu triangles, "
@@ -369,7 +352,7 @@ int run_surface_remesh(const RemeshJob& job) {
       << ",\n  \"seconds\": " << json_number(seconds) << ",\n  \"mesh_check\": " << mesh_check_json(result.check)
       << ",\n  \"mesh\": " << (result.mesh.triangles.empty() ? std::string("null") : quality_json(q)) << "\n}\n";
     const std::string text = j.str();
-    write_file_atomically(job.json, [&](std::ostream& out) { out << text; });
+    write_json(job.json, text);
   }
   std::fprintf(stderr, 
       "remesh: %zu vertices (%s), %zu triangles, %zu edges along feature curves, %s, angles %.2f..%.2f deg, "
