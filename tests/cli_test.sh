@@ -79,6 +79,18 @@ expect bad-box 2 "width and height must be" -- "$bin" sample --width -1 --radius
 expect no-radius 2 "radius" -- "$bin" sample --output z.csv
 expect unknown-option 2 "--frobnicate|frobnicate" -- "$bin" sample --radius 0.1 --frobnicate
 expect unknown-command 2 "disktune --help" -- "$bin" sculpt
+# Unknown words in the order given, each with the name it is closest to (two edits)
+expect suggest-options 2 "^disktune: sample: unknown option --radus \(did you mean --radius\?\), unknown option --sed \(did you mean --seed\?\)$" -- "$bin" sample --radus 0.1 --sed 3
+expect suggest-command 2 "^disktune: unknown command sampel \(did you mean sample\?\)$" -- "$bin" sampel --radius 0.1
+expect no-suggestion 2 "^disktune: tune: unknown option --frobnicate$" -- "$bin" tune --radius 0.1 --frobnicate
+expect stray-argument 2 "^disktune: sample: unexpected argument stray$" -- "$bin" sample --radius 0.1 stray
+# Without --output nothing is written, and the command says so
+expect no-output-note 0 "note: no --output given: the [0-9]+ disks were not written" -- "$bin" sample --radius 0.1
+expect no-output-note-tune 0 "note: no --output given: the 320 disks were not written" -- "$bin" tune --radius 0.05 --target-count 320
+# Progress goes to a log too (plain lines, here every 0.05 s instead of 10 s), with the time so far
+DISKTUNE_PROGRESS_SECONDS=0.05 "$bin" tune --radius 0.01 --target-fraction 0.7 2>progress.log >/dev/null &&
+  grep -qE "^tune: +[0-9.]+ %, [0-9]+/[0-9]+ disks, eta 0\.[0-9]+, [a-z ]+, [0-9.]+ s so far$" progress.log &&
+  ! grep -q $'\r' progress.log && pass=$((pass + 1)) || { echo "FAIL progress lines in a log"; cat progress.log; fails=$((fails + 1)); }
 expect bad-domain 2 "domain" -- "$bin" sample --domain sphere --radius 0.1
 expect bad-folder 3 "does not exist" -- "$bin" sample --radius 0.1 --output no/such/dir/z.csv
 mkdir ro && chmod 555 ro

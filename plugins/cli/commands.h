@@ -145,6 +145,9 @@ int run_demo();
 /// Throws IoError when the folder of an output path does not exist, so that a typo
 /// costs no minutes of computing before the write fails.
 void check_output_folder(const std::string& path);
+/// After sample or tune without --output: a note on stderr that the `count` disks were
+/// not written, and how to write them.
+void note_not_written(const std::string& output, std::size_t count);
 
 /// A file a command reads or writes, with the option (or argument) that names it.
 struct NamedFile {

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Checks on the files a command will write, made before any work: their folders exist,
 // no two outputs are one file, and no output is a file the command reads.
+#include <cstdio>
 #include <filesystem>
 #include <system_error>
 
@@ -17,6 +18,14 @@ void check_output_folder(const std::string& path) {
   if (!parent.empty() && !fs::is_directory(parent)) {
     throw IoError("cannot write '" + path + "': folder '" + parent.string() + "' does not exist");
   }
+}
+
+void note_not_written(const std::string& output, std::size_t count) {
+  if (!output.empty()) return;
+  std::fprintf(stderr,
+               "disktune: note: no --output given: the %zu disks were not written (add -o FILE.csv, or -o - for "
+               "standard output)\n",
+               count);
 }
 
 namespace {

@@ -1,11 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// A one-line progress bar on stderr, drawn only when stderr is a terminal (so logs and
-// pipes stay clean), at most ten times a second.
+// Progress on stderr: on a terminal a one-line bar redrawn at most ten times a second;
+// elsewhere (a log, a pipe) a plain line every ten seconds (DISKTUNE_PROGRESS_SECONDS
+// sets another interval), none for a job shorter than that. Both show the time so far.
 #pragma once
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cstdlib>
 #include <cstdio>
 #include <string>
 
@@ -13,20 +16,30 @@ namespace disktune::cli {
 
 class ProgressBar {
  public:
-  ProgressBar() : live_(isatty(STDERR_FILENO) != 0) {}
+  /// `what` opens each logged line ("tune").
+  explicit ProgressBar(std::string what) : what_(std::move(what)), terminal_(isatty(STDERR_FILENO) != 0) {
+    const char* every = std::getenv("DISKTUNE_PROGRESS_SECONDS");
+    const double seconds = every ? std::atof(every) : 0;
+    if (seconds > 0 && seconds < 1e6) log_every_ = std::chrono::duration<double>(seconds);
+  }
   ~ProgressBar() { clear(); }
 
-  /// Shows `done` of `total`, with a short status after the bar.
+  /// Shows `done` of `total`, with a short status after it.
   void update(double done, double total, const std::string& status) {
-    if (!live_) return;
-    const auto now = std::chrono::steady_clock::now();
-    if (drawn_ && now - last_ < std::chrono::milliseconds(100)) return;
+    using namespace std::chrono;
+    const auto now = steady_clock::now();
+    if (now - last_ < (terminal_ ? duration<double>(0.1) : log_every_)) return;
     last_ = now;
     const double f = total > 0 ? std::min(std::max(done / total, 0.0), 1.0) : 0.0;
+    const double seconds = duration<double>(now - start_).count();
+    if (!terminal_) {
+      std::fprintf(stderr, "%s: %5.1f %%, %s, %.1f s so far\n", what_.c_str(), 100 * f, status.c_str(), seconds);
+      return;
+    }
     constexpr int kWidth = 30;
     const int full = static_cast<int>(f * kWidth + 0.5);
-    std::fprintf(stderr, "\r[%s%s] %5.1f%% %s\033[K", std::string(full, '#').c_str(),
-                 std::string(kWidth - full, '.').c_str(), 100 * f, status.c_str());
+    std::fprintf(stderr, "\r[%s%s] %5.1f%% %s, %.1f s\033[K", std::string(full, '#').c_str(),
+                 std::string(kWidth - full, '.').c_str(), 100 * f, status.c_str(), seconds);
     std::fflush(stderr);
     drawn_ = true;
   }
@@ -36,9 +49,11 @@ class ProgressBar {
   }
 
  private:
-  bool live_;
+  std::string what_;
+  bool terminal_;
   bool drawn_ = false;
-  std::chrono::steady_clock::time_point last_{};
+  std::chrono::duration<double> log_every_{10.0};
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now(), last_ = start_;
 };
 
 }  // namespace disktune::cli

@@ -28,6 +28,7 @@ int run_sample(const SampleJob& job) {
   std::fprintf(stderr, "sample: %zu disks, %s, %.3f s (%s, %s)%s%s\n", packing.size(),
               domain.density_text(packing.size()).c_str(), seconds, domain.radius_text().c_str(),
               domain.describe().c_str(), job.output.empty() ? "" : " -> ", job.output.c_str());
+  note_not_written(job.output, packing.size());
   return kExitOk;
 }
 

@@ -145,6 +145,7 @@ int run_surface_sample(const SampleJob& job) {
               boundary_text(packing).c_str(), domain.density_text(packing.size()).c_str(), seconds,
               domain.radius_text().c_str(), domain.describe().c_str(),
               job.output.empty() ? "" : " -> ", job.output.c_str());
+  note_not_written(job.output, packing.size());
   warn_too_few_to_mesh(packing.size());
   return kExitOk;
 }

@@ -85,7 +85,7 @@ std::string relaxed_text(int sweeps) {
 TuneResult tune_with_progress(std::size_t start, std::size_t target, Method method,
                               const std::function<TuneResult(const TuneOptions&)>& run, const std::string& output,
                               const std::function<void()>& write_output) {
-  ProgressBar bar;
+  ProgressBar bar("tune");
   TuneOptions options;
   options.method = method;
   options.on_progress = [&](const Progress& p) {
@@ -113,11 +113,12 @@ int report_tune(std::size_t start, const TuneResult& res, const std::string& den
               res.count, res.target, res.reached ? ", reached" : ", NOT reached", density.c_str(),
               to_string(res.last_phase).c_str(), seconds, where.c_str(),
               output.empty() ? "" : " -> ", output.c_str());
+  note_not_written(output, res.count);
   if (!res.reached) {
     std::fprintf(stderr,
                  "disktune: the target was not reached: no phase makes progress beyond %zu disks "
-                 "(%s); the closest packing was written\n",
-                 res.count, density.c_str());
+                 "(%s)%s\n",
+                 res.count, density.c_str(), output.empty() ? "" : "; the closest packing was written");
     return kExitNotReached;
   }
   return kExitOk;
