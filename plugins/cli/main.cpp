@@ -65,7 +65,8 @@ std::string unexpected(const CLI::App& app) {
     const std::string guess = closest(words[0]);  // a misspelt command: what follows is its
     return "unknown command " + words[0] + (guess.empty() ? "" : " (did you mean " + guess + "?)");
   }
-  const bool options = std::any_of(words.begin(), words.end(), [](const std::string& w) { return w[0] == '-'; });
+  const bool options =
+      std::any_of(words.begin(), words.end(), [](const std::string& w) { return w[0] == '-'; });
   std::string out = given.empty() ? "" : where.get_name() + ": ";
   for (const std::string& word : words) {
     if (word.empty() || (options && word[0] != '-')) continue;  // a value after an unknown option
@@ -126,7 +127,8 @@ int main(int argc, char** argv) {
   } catch (const CLI::ExtrasError&) {
     const std::vector<CLI::App*> given = app.get_subcommands();
     std::cerr << "disktune: " << unexpected(app) << "\nRun 'disktune "
-              << (given.empty() ? std::string() : given.front()->get_name() + " ") << "--help' for the options.\n";
+              << (given.empty() ? std::string() : given.front()->get_name() + " ")
+              << "--help' for the options.\n";
     return kExitUsage;
   } catch (const CLI::ParseError& e) {
     std::cerr << "disktune: " << e.what() << "\nRun 'disktune --help' for the options.\n";

@@ -8,8 +8,8 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cstdlib>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 
 namespace disktune::cli {
@@ -17,7 +17,8 @@ namespace disktune::cli {
 class ProgressBar {
  public:
   /// `what` opens each logged line ("tune").
-  explicit ProgressBar(std::string what) : what_(std::move(what)), terminal_(isatty(STDERR_FILENO) != 0) {
+  explicit ProgressBar(std::string what)
+      : what_(std::move(what)), terminal_(isatty(STDERR_FILENO) != 0) {
     const char* every = std::getenv("DISKTUNE_PROGRESS_SECONDS");
     const double seconds = every ? std::atof(every) : 0;
     if (seconds > 0 && seconds < 1e6) log_every_ = std::chrono::duration<double>(seconds);
@@ -33,7 +34,8 @@ class ProgressBar {
     const double f = total > 0 ? std::min(std::max(done / total, 0.0), 1.0) : 0.0;
     const double seconds = duration<double>(now - start_).count();
     if (!terminal_) {
-      std::fprintf(stderr, "%s: %5.1f %%, %s, %.1f s so far\n", what_.c_str(), 100 * f, status.c_str(), seconds);
+      std::fprintf(stderr, "%s: %5.1f %%, %s, %.1f s so far\n", what_.c_str(), 100 * f,
+                   status.c_str(), seconds);
       return;
     }
     constexpr int kWidth = 30;

@@ -118,7 +118,8 @@ int report_tune(std::size_t start, const TuneResult& res, const std::string& den
     std::fprintf(stderr,
                  "disktune: the target was not reached: no phase makes progress beyond %zu disks "
                  "(%s)%s\n",
-                 res.count, density.c_str(), output.empty() ? "" : "; the closest packing was written");
+                 res.count, density.c_str(),
+                 output.empty() ? "" : "; the closest packing was written");
     return kExitNotReached;
   }
   return kExitOk;
