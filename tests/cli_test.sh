@@ -161,6 +161,28 @@ m = meshio.read('q.vtk')
 assert [c.type for c in m.cells] == ['triangle'] and len(m.point_data['disk_id']) == len(m.points), m
 " && pass=$((pass + 1)) || { echo "FAIL VTK read by meshio"; fails=$((fails + 1)); }
 fi
+for ext in vtu msh stl; do  # the other formats meshio reads: the same triangles as the OFF file
+  expect mesh-$ext 0 "-> q.$ext" -- "$bin" mesh q.csv --radius 0.05 --output q.$ext
+  if /usr/bin/python3 -c "import meshio" 2>/dev/null; then
+    /usr/bin/python3 -c "
+import meshio, numpy, sys
+ext = sys.argv[1]
+off = open('q.off').read().split()
+nv, nt = int(off[1]), int(off[2])
+points = numpy.array(off[4:4 + 3 * nv], float).reshape(nv, 3)
+faces = numpy.array(off[4 + 3 * nv:], int).reshape(nt, 4)[:, 1:]
+m = meshio.read('q.' + ext)
+tri = m.cells_dict['triangle']
+assert len(tri) == nt, (ext, len(tri), nt)
+if ext == 'stl':  # no shared vertices, 32-bit floats: compare the corners
+    assert numpy.allclose(m.points[tri], points[faces], atol=1e-6)
+else:
+    assert numpy.array_equal(m.points, points) and numpy.array_equal(tri, faces)
+if ext == 'vtu':
+    assert len(m.point_data['disk_id']) == nv
+" "$ext" && pass=$((pass + 1)) || { echo "FAIL mesh .$ext read by meshio"; fails=$((fails + 1)); }
+  fi
+done
 expect mesh-ply 0 "-> q.ply" -- "$bin" mesh q.csv --radius 0.05 --output q.ply
 sed -n 4p q.ply | grep -qE "^element vertex [0-9]+$" && pass=$((pass + 1)) || { echo "FAIL mesh PLY header"; fails=$((fails + 1)); }
 expect mesh-bad-extension 2 "supported: \.off, \.obj, \.ply, \.vtk" -- "$bin" mesh q.csv --radius 0.05 --output q.xyz
@@ -357,6 +379,18 @@ faces = sum(1 for l in open('fd.obj') if l.startswith('f '))
 assert [(c.type, len(c.data)) for c in m.cells] == [('triangle', faces), ('line', lines)], m
 " && pass=$((pass + 1)) || { echo "FAIL surface VTK with feature lines read by meshio"; fails=$((fails + 1)); }
 fi
+for ext in vtu msh; do  # the feature edges as lines there too
+  expect features-mesh-$ext 0 "edges along feature curves" -- "$bin" mesh fd.csv --domain "$fandisk" --radius 0.02 --output fd.$ext
+  if /usr/bin/python3 -c "import meshio" 2>/dev/null; then
+    /usr/bin/python3 -c "
+import meshio, sys
+m = meshio.read('fd.' + sys.argv[1])
+lines = sum(1 for l in open('fd.obj') if l.startswith('l '))
+faces = sum(1 for l in open('fd.obj') if l.startswith('f '))
+assert len(m.cells_dict['triangle']) == faces and len(m.cells_dict['line']) == lines, m
+" "$ext" && pass=$((pass + 1)) || { echo "FAIL surface .$ext with feature lines read by meshio"; fails=$((fails + 1)); }
+  fi
+done
 expect surface-auto 0 "^sample: [0-9]+ disks \([1-9][0-9]* on feature curves\), .*sizing thickness sizing min\(0\.05, 0\.45 thickness, 0\.9 curve gap\) graded at 0\.2, smallest 0\.0141 near \(0\.442, 0\.224, -0\.0794\)" -- "$bin" sample --domain "$fandisk" --sizing auto:0.05 --output fa.csv
 expect surface-auto-report 0 "^report: .*maximal, conflict-free; mesh: .*manifold yes, genus 0" -- "$bin" report fa.csv --domain "$fandisk" --sizing auto:0.05
 expect features-none 0 "^sample: [0-9]+ disks, eta .*genus 0, closed, area" -- "$bin" sample --domain "$fandisk" --radius 0.02 --features none

@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Mesh files: OFF, OBJ and legacy VTK read back to the same numbers; unknown
-// extensions are refused before anything is written; the SVG picture.
+// Mesh files: OFF, OBJ, legacy VTK, VTU, MSH (read by Gmsh itself) and binary STL read
+// back to the same numbers; unknown extensions are refused before anything is written;
+// the SVG picture.
 #include "disktune/mesh_io.h"
 
+#include <gmsh.h>
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -139,6 +141,109 @@ TEST(MeshIo, EveryFormatServesEveryMeshKind) {
   in >> n >> words;
   EXPECT_EQ(n, 4u);
   EXPECT_EQ(words, 16u);
+}
+
+// A tetrahedron with two feature edges, coordinates with many digits.
+SurfaceMesh tetrahedron() {
+  SurfaceMesh m{{{0, 0, 0}, {1, 0, 1.0 / 3}, {0, 1, 0}, {0, 0, 1.0 / 7}},
+                {{{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}}}};
+  m.feature_edges = {{0, 1}, {1, 2}};
+  return m;
+}
+
+// The numbers between <DataArray ... Name="name" ...> and </DataArray>.
+std::vector<double> vtu_array(const std::string& text, const std::string& name) {
+  const std::size_t tag = text.find("Name=\"" + name + "\"");
+  EXPECT_NE(tag, std::string::npos) << name;
+  const std::size_t from = text.find('>', tag) + 1, to = text.find("</DataArray>", from);
+  std::istringstream in(text.substr(from, to - from));
+  std::vector<double> out;
+  for (double x; in >> x;) out.push_back(x);
+  return out;
+}
+
+TEST(MeshIo, VtuHoldsPointsCellsLinesAndDiskIds) {
+  TempDir dir;
+  const SurfaceMesh tetra = tetrahedron();
+  write_surface_mesh(dir.file("t.vtu"), tetra);
+  std::ifstream in(dir.file("t.vtu"));
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("<Piece NumberOfPoints=\"4\" NumberOfCells=\"6\">"), std::string::npos);
+  const std::size_t from = text.find('>', text.find("NumberOfComponents=\"3\"")) + 1;
+  std::istringstream points(text.substr(from));
+  for (const Vec3& p : tetra.vertices) {
+    double x, y, z;
+    points >> x >> y >> z;
+    EXPECT_EQ((Vec3{x, y, z}), p);
+  }
+  EXPECT_EQ(vtu_array(text, "connectivity"),
+            (std::vector<double>{0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3, 0, 1, 1, 2}));
+  EXPECT_EQ(vtu_array(text, "offsets"), (std::vector<double>{3, 6, 9, 12, 14, 16}));
+  EXPECT_EQ(vtu_array(text, "types"), (std::vector<double>{5, 5, 5, 5, 3, 3}));
+  const TriangleMesh m = small_mesh();
+  write_mesh(dir.file("m.vtu"), m);
+  std::ifstream in2(dir.file("m.vtu"));
+  const std::string periodic((std::istreambuf_iterator<char>(in2)), std::istreambuf_iterator<char>());
+  const std::vector<double> ids = vtu_array(periodic, "disk_id");
+  ASSERT_EQ(ids.size(), m.vertex_disk.size());
+  for (std::size_t i = 0; i < ids.size(); ++i) EXPECT_EQ(ids[i], m.vertex_disk[i]);
+}
+
+TEST(MeshIo, GmshReadsTheMshBack) {
+  TempDir dir;
+  const SurfaceMesh tetra = tetrahedron();
+  write_surface_mesh(dir.file("t.msh"), tetra);
+  gmsh::initialize(0, nullptr, false);
+  gmsh::option::setNumber("General.Terminal", 0);
+  struct Finalize {
+    ~Finalize() { gmsh::finalize(); }
+  } finalize;
+  ASSERT_NO_THROW(gmsh::open(dir.file("t.msh")));
+  std::vector<std::size_t> tags;
+  std::vector<double> xyz, parametric;
+  gmsh::model::mesh::getNodes(tags, xyz, parametric);
+  ASSERT_EQ(tags.size(), 4u);
+  for (std::size_t k = 0; k < 4; ++k) {
+    EXPECT_EQ((Vec3{xyz[3 * k], xyz[3 * k + 1], xyz[3 * k + 2]}), tetra.vertices[tags[k] - 1]);
+  }
+  std::vector<std::size_t> element_tags, nodes;
+  gmsh::model::mesh::getElementsByType(2, element_tags, nodes);
+  ASSERT_EQ(nodes.size(), 12u);
+  for (std::size_t t = 0; t < 4; ++t)
+    for (int k = 0; k < 3; ++k) EXPECT_EQ(nodes[3 * t + k] - 1, tetra.triangles[t][k]);
+  std::vector<std::size_t> line_tags, line_nodes;  // fresh: the call does not clear its outputs
+  gmsh::model::mesh::getElementsByType(1, line_tags, line_nodes);
+  EXPECT_EQ(line_nodes, (std::vector<std::size_t>{1, 2, 2, 3}));
+}
+
+TEST(MeshIo, StlIsBinaryWithUnitNormals) {
+  TempDir dir;
+  const SurfaceMesh tetra = tetrahedron();
+  write_surface_mesh(dir.file("t.stl"), tetra);
+  EXPECT_EQ(fs::file_size(dir.file("t.stl")), 84u + 50u * 4);
+  std::ifstream in(dir.file("t.stl"), std::ios::binary);
+  char header[80];
+  in.read(header, 80);
+  EXPECT_NE(std::string(header, 80).rfind("solid", 0), 0u);  // readers take "solid" for ASCII
+  std::uint32_t count = 0;
+  in.read(reinterpret_cast<char*>(&count), 4);
+  ASSERT_EQ(count, 4u);
+  for (const auto& t : tetra.triangles) {
+    float record[12];
+    in.read(reinterpret_cast<char*>(record), sizeof record);
+    const Vec3 n{record[0], record[1], record[2]};
+    EXPECT_NEAR(norm(n), 1, 1e-6);
+    for (int k = 0; k < 3; ++k) {
+      const Vec3 v = tetra.vertices[t[k]];
+      EXPECT_EQ(record[3 + 3 * k], static_cast<float>(v.x));
+      EXPECT_EQ(record[4 + 3 * k], static_cast<float>(v.y));
+      EXPECT_EQ(record[5 + 3 * k], static_cast<float>(v.z));
+    }
+    const Vec3 a = tetra.vertices[t[0]], b = tetra.vertices[t[1]], c = tetra.vertices[t[2]];
+    EXPECT_GT(dot(n, cross(b - a, c - a)), 0);  // the triangle's own orientation
+    EXPECT_NEAR(dot(n, b - a), 0, 1e-6);
+    in.ignore(2);
+  }
 }
 
 TEST(MeshIo, UnknownExtensionIsRefusedAndWritesNothing) {

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Writing a TriangleMesh or PlanarMesh (and, through surface_mesh.h, a SurfaceMesh): ASCII
-// OFF, OBJ, PLY or legacy VTK (an unstructured grid: ParaView, VTK and meshio read it), chosen by the file's extension, and an SVG picture of the mesh over its packing. Every writer
-// goes through write_file_atomically: a failure leaves no partial file.
+// OFF, OBJ, PLY, legacy VTK or VTK XML (.vtu; both unstructured grids: ParaView, VTK and
+// meshio read them), Gmsh MSH 4.1 (ASCII) or binary STL, chosen by the file's extension,
+// and an SVG picture of the mesh over its packing. Every writer goes through
+// write_file_atomically: a failure leaves no partial file.
 #pragma once
 
 #include <string>
@@ -11,15 +13,18 @@
 
 namespace disktune {
 
-enum class MeshFormat { Off, Obj, Ply, Vtk };
+enum class MeshFormat { Off, Obj, Ply, Vtk, Vtu, Msh, Stl };
 
-/// The format named by the extension of `path` (.off, .obj, .ply, .vtk; any letter case).
+/// The format named by the extension of `path` (.off, .obj, .ply, .vtk, .vtu, .msh, .stl;
+/// any letter case).
 /// Throws InvalidInput, listing the supported extensions, for any other.
 MeshFormat mesh_format_for_path(const std::string& path);
 
 /// Writes the mesh's vertices (z = 0) and triangles in the format of `path`'s
-/// extension. The VTK file also carries each vertex's disk id (point data `disk_id`),
-/// which tells the copies across the seam from the disks themselves.
+/// extension. The VTK files also carry each vertex's disk id (point data `disk_id`),
+/// which tells the copies across the seam from the disks themselves; OBJ, VTK and MSH
+/// files carry a surface mesh's feature edges as lines; STL (binary, 32-bit floats)
+/// has no shared vertices, so it keeps only the triangles' shape.
 void write_mesh(const std::string& path, const TriangleMesh& mesh);
 /// The same for a planar mesh; its VTK `disk_id` is kNoDisk for a vertex that is no disk.
 void write_mesh(const std::string& path, const PlanarMesh& mesh);

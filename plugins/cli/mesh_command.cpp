@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // `disktune mesh`: the Delaunay mesh of a packing (periodic, or constrained by a planar
-// domain's boundary), as OFF, OBJ, PLY or VTK.
+// domain's boundary), as OFF, OBJ, PLY, VTK, VTU, MSH or STL.
 #include <chrono>
 #include <cstdio>
 #include <memory>
@@ -60,7 +60,7 @@ void add_mesh_command(CLI::App& app, Action& action) {
   auto args = std::make_shared<MeshArgs>();
   CLI::App* cmd = app.add_subcommand(
       "mesh",
-      "Write the Delaunay mesh of a packing (CSV x,y,r) as OFF, OBJ, PLY or VTK. In the periodic "
+      "Write the Delaunay mesh of a packing (CSV x,y,r) as OFF, OBJ, PLY, VTK, VTU, MSH or STL. In the periodic "
       "box: each torus triangle once, laid out with its centroid in the box; vertices past "
       "the first N are periodic copies of disks, across the seam. In a planar domain: the "
       "constrained Delaunay triangulation, boundary segments as edges, holes removed. On a "
@@ -69,8 +69,8 @@ void add_mesh_command(CLI::App& app, Action& action) {
       ->required();
   add_domain_options(cmd, args->domain);
   writes_file(cmd->add_option("--output,-o", args->output,
-                  "Mesh file to write: .off, .obj, .ply or .vtk (all ASCII; .vtk is legacy VTK, "
-                  "which ParaView opens), on every domain"))
+                  "Mesh file to write: .off, .obj, .ply, .vtk (legacy VTK), .vtu (VTK XML), .msh (Gmsh "
+                  "4.1), all ASCII, or .stl (binary), on every domain"))
       ->required();
   cmd->callback([args, &action] { action = [args] { return run_mesh(*args); }; });
 }

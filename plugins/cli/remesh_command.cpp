@@ -20,7 +20,7 @@ void add_remesh_command(CLI::App& app, Action& action) {
   cmd->add_option("--vertices,-n", job->vertices, "The vertex count of the new mesh (at least 4)")
       ->check(whole_number(4, 1'000'000'000, "--vertices"))
       ->required();
-  writes_file(cmd->add_option("--output,-o", job->output, "Mesh file to write: .off, .obj, .ply or .vtk"))->required();
+  writes_file(cmd->add_option("--output,-o", job->output, "Mesh file to write: .off, .obj, .ply, .vtk, .vtu (VTK XML), .msh (Gmsh 4.1) or .stl (binary)"))->required();
   cmd->add_option("--features", job->features,
                   "Sharp edges to keep: edges whose triangles' normals differ by more than this many "
                   "degrees (default 60), or 'none'")

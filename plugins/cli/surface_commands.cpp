@@ -37,7 +37,7 @@ void refuse_svg(const std::string& svg, const std::string& command) {
   throw InvalidInput(command +
                      " --svg: the SVG picture draws the plane (the periodic box or a planar "
                      "domain) and cannot show disks on a curved surface; leave out --svg and view "
-                     "the surface mesh from 'disktune mesh' (.off, .obj, .ply, .vtk) in a mesh viewer");
+                     "the surface mesh from 'disktune mesh' (.off, .obj, .ply, .vtk, .vtu, .msh, .stl) in a mesh viewer");
 }
 
 std::size_t fixed_count(const SurfacePacking& packing) {
@@ -256,7 +256,7 @@ int run_surface_report(const SurfaceReportJob& job) {
     throw InvalidInput(
         "report --svg: the SVG picture draws the plane (the periodic box or a planar "
         "domain); on a surface write the mesh with 'disktune mesh' (.off, .obj, .ply, "
-        ".vtk) and use --json for the measures");
+        ".vtk, .vtu, .msh, .stl) and use --json for the measures");
   }
   if (!job.png_dir.empty()) {
     throw InvalidInput(

@@ -1,8 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Every mesh (periodic, planar, surface) as ASCII OFF, OBJ, PLY or legacy VTK, by one
-// writer: a planar vertex is written with z = 0.
+// Every mesh (periodic, planar, surface) as ASCII OFF, OBJ, PLY, legacy VTK, VTK XML
+// (.vtu) or Gmsh MSH 4.1, or binary STL, by one writer: a planar vertex is written with
+// z = 0.
 #include "disktune/mesh_io.h"
 
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -51,6 +56,88 @@ void put_triangles(std::ostream& out, const MeshView& mesh, const char* prefix, 
   for (const auto& t : mesh.triangles) out << prefix << t[0] + base << ' ' << t[1] + base << ' ' << t[2] + base << '\n';
 }
 
+// VTK's XML unstructured grid, ASCII: triangles (type 5), then the lines (type 3), and
+// the disk ids as point data.
+void put_vtu(std::ostream& out, const MeshView& mesh) {
+  const std::size_t nt = mesh.triangles.size(), nl = mesh.lines ? mesh.lines->size() : 0;
+  out << "<?xml version=\"1.0\"?>\n<!-- " << mesh.title << " -->\n"
+      << "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n<UnstructuredGrid>\n"
+      << "<Piece NumberOfPoints=\"" << mesh.vertices.size() << "\" NumberOfCells=\"" << nt + nl << "\">\n"
+      << "<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+  put_vertices(out, mesh, "");
+  out << "</DataArray>\n</Points>\n<Cells>\n<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
+  put_triangles(out, mesh, "", 0);
+  for (std::size_t k = 0; k < nl; ++k) out << (*mesh.lines)[k][0] << ' ' << (*mesh.lines)[k][1] << '\n';
+  out << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
+  for (std::size_t k = 0; k < nt + nl; ++k) out << (k < nt ? 3 * (k + 1) : 3 * nt + 2 * (k + 1 - nt)) << '\n';
+  out << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
+  for (std::size_t k = 0; k < nt + nl; ++k) out << (k < nt ? "5\n" : "3\n");
+  out << "</DataArray>\n</Cells>\n";
+  if (mesh.vertex_disk) {
+    out << "<PointData Scalars=\"disk_id\">\n<DataArray type=\"UInt32\" Name=\"disk_id\" format=\"ascii\">\n";
+    for (const DiskId id : *mesh.vertex_disk) out << id << '\n';
+    out << "</DataArray>\n</PointData>\n";
+  }
+  out << "</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+}
+
+// Gmsh's MSH 4.1, ASCII: the vertices as nodes 1..n of surface 1, the triangles
+// (element type 2) on it, the lines (type 1) on curve 1. Gmsh wants every entity an
+// element names declared ($Entities, with its bounding box), not only those that hold
+// nodes.
+void put_msh(std::ostream& out, const MeshView& mesh) {
+  const std::size_t nv = mesh.vertices.size(), nt = mesh.triangles.size(), nl = mesh.lines ? mesh.lines->size() : 0;
+  Vec3 lo{0, 0, 0}, hi{0, 0, 0};
+  for (std::size_t k = 0; k < nv; ++k) {
+    const Vec3 p = mesh.vertices[k];
+    lo = k ? Vec3{std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)} : p;
+    hi = k ? Vec3{std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)} : p;
+  }
+  const auto entity = [&] {  // "1 <box> 0 0": tag 1, no physical group, no boundary
+    out << "1 ";
+    for (const double x : {lo.x, lo.y, lo.z, hi.x, hi.y, hi.z}) put_number(out, x), out << ' ';
+    out << "0 0\n";
+  };
+  out << "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Entities\n0 " << (nl ? 1 : 0) << " 1 0\n";
+  if (nl) entity();
+  entity();
+  out << "$EndEntities\n$Nodes\n1 " << nv << " 1 " << nv << "\n2 1 0 " << nv << '\n';
+  for (std::size_t k = 1; k <= nv; ++k) out << k << '\n';
+  put_vertices(out, mesh, "");
+  const std::size_t elements = nt + nl;
+  out << "$EndNodes\n$Elements\n" << (nl ? 2 : 1) << ' ' << elements << " 1 " << elements << "\n2 1 2 " << nt << '\n';
+  for (std::size_t k = 0; k < nt; ++k) {
+    const auto& t = mesh.triangles[k];
+    out << k + 1 << ' ' << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
+  }
+  if (nl) {
+    out << "1 1 1 " << nl << '\n';
+    for (std::size_t k = 0; k < nl; ++k) out << nt + k + 1 << ' ' << (*mesh.lines)[k][0] + 1 << ' ' << (*mesh.lines)[k][1] + 1 << '\n';
+  }
+  out << "$EndElements\n";
+}
+
+// Binary STL: an 80-byte header, the count, then per triangle its unit normal and
+// corners as 32-bit floats (little-endian, as on every machine this builds for) and
+// two zero bytes. STL has no shared vertices and no lines.
+void put_stl(std::ostream& out, const MeshView& mesh) {
+  char header[80] = {};
+  std::strncpy(header, ("binary STL, " + mesh.title).c_str(), sizeof header - 1);
+  out.write(header, sizeof header);
+  const auto count = static_cast<std::uint32_t>(mesh.triangles.size());
+  out.write(reinterpret_cast<const char*>(&count), sizeof count);
+  for (const auto& t : mesh.triangles) {
+    const Vec3 a = mesh.vertices[t[0]], b = mesh.vertices[t[1]], c = mesh.vertices[t[2]];
+    Vec3 n = cross(b - a, c - a);
+    const double length = norm(n);
+    n = length > 0 ? n * (1 / length) : Vec3{0, 0, 0};
+    const float record[12] = {float(n.x), float(n.y), float(n.z), float(a.x), float(a.y), float(a.z),
+                              float(b.x), float(b.y), float(b.z), float(c.x), float(c.y), float(c.z)};
+    out.write(reinterpret_cast<const char*>(record), sizeof record);
+    out.write("\0\0", 2);
+  }
+}
+
 void write_view(const std::string& path, const MeshView& mesh) {
   const MeshFormat format = mesh_format_for_path(path);
   const std::size_t nv = mesh.vertices.size(), nt = mesh.triangles.size();
@@ -93,6 +180,9 @@ void write_view(const std::string& path, const MeshView& mesh) {
         for (const DiskId id : *mesh.vertex_disk) out << id << '\n';
         return;
       }
+      case MeshFormat::Vtu: return put_vtu(out, mesh);
+      case MeshFormat::Msh: return put_msh(out, mesh);
+      case MeshFormat::Stl: return put_stl(out, mesh);
     }
   });
 }
@@ -105,8 +195,12 @@ MeshFormat mesh_format_for_path(const std::string& path) {
   if (ext == ".obj") return MeshFormat::Obj;
   if (ext == ".ply") return MeshFormat::Ply;
   if (ext == ".vtk") return MeshFormat::Vtk;
+  if (ext == ".vtu") return MeshFormat::Vtu;
+  if (ext == ".msh") return MeshFormat::Msh;
+  if (ext == ".stl") return MeshFormat::Stl;
   throw InvalidInput("cannot tell the mesh format of '" + path +
-                     "' from its extension; supported: .off, .obj, .ply, .vtk (all ASCII; .vtk is legacy VTK)");
+                     "' from its extension; supported: .off, .obj, .ply, .vtk, .vtu, .msh, .stl (.vtk is legacy VTK, "
+                     ".vtu VTK XML, .msh Gmsh 4.1, .stl binary; the others ASCII)");
 }
 
 void write_mesh(const std::string& path, const TriangleMesh& mesh) {
