@@ -209,6 +209,13 @@ assert list(j)[0] == 'disktune' and j['disktune']['version'] == sys.argv[1], j['
 assert j['disktune']['arguments'] == ['report', 'q.csv', '--radius', '0.05', '--json', 'q.json', '--svg', 'q.svg'], j['disktune']
 " "$version" &&
   grep -q "^report: $n disks" report.err && pass=$((pass + 1)) || { echo "FAIL report --json - on stdout"; fails=$((fails + 1)); }
+# "-" as an input is standard input: a pipeline from sample through tune to report and mesh
+"$bin" sample --radius 0.05 --seed 3 -o - 2>/dev/null | "$bin" tune -i - --target-count 320 -o - 2>/dev/null |
+  "$bin" report - 2>&1 | grep -q "^report: 320 disks, .*maximal, conflict-free" &&
+  "$bin" sample --radius 0.05 --seed 3 -o - 2>/dev/null | "$bin" mesh - -o piped.off 2>/dev/null &&
+  "$bin" mesh a.csv -o from-file.off 2>/dev/null && cmp -s piped.off from-file.off &&
+  pass=$((pass + 1)) || { echo "FAIL - as standard input"; fails=$((fails + 1)); }
+expect stdin-empty 2 "^disktune: error: standard input:1: empty file" -- "$bin" report - </dev/null
 "$bin" sample --radius 0.05 --seed 3 -o - 2>sample.err >piped.csv && cmp -s piped.csv a.csv && grep -q "^sample: " sample.err && [ ! -e ./- ] &&
   pass=$((pass + 1)) || { echo "FAIL sample -o - on stdout, same CSV, no file named -"; fails=$((fails + 1)); }
 expect report-rect 0 "maximal, conflict-free" -- "$bin" report c.csv --width 2 --height 0.5 --radius 0.1

@@ -57,6 +57,11 @@ CLI::Option* add_seed_option(CLI::App* cmd, std::uint64_t& seed);
 /// Makes `option` an output file that may be given as "-": standard output (written
 /// straight, as any device; the summary lines go to standard error anyway).
 CLI::Option* writes_file(CLI::Option* option);
+/// Makes `option` an input file that may be given as "-": standard input (kept whole,
+/// so that it can be read more than once; one input at most).
+CLI::Option* reads_file(CLI::Option* option);
+/// `message` with the path standard input was kept at named "standard input".
+std::string naming_stdin(std::string message);
 
 /// Keeps the command line for the JSON files (main calls it before parsing).
 void remember_invocation(int argc, char** argv);

@@ -142,10 +142,10 @@ int main(int argc, char** argv) {
   try {
     return demo ? action() : with_outputs_as_one(action);
   } catch (const disktune::InvalidInput& e) {
-    std::cerr << "disktune: error: " << e.what() << "\n";
+    std::cerr << "disktune: error: " << naming_stdin(e.what()) << "\n";
     return kExitUsage;
   } catch (const disktune::IoError& e) {
-    std::cerr << "disktune: error: " << e.what() << "\n";
+    std::cerr << "disktune: error: " << naming_stdin(e.what()) << "\n";
     return kExitIo;
   } catch (const std::bad_alloc&) {
     // Not a bug: the job is larger than this machine's memory. No output was replaced

@@ -65,7 +65,8 @@ void add_mesh_command(CLI::App& app, Action& action) {
       "the first N are periodic copies of disks, across the seam. In a planar domain: the "
       "constrained Delaunay triangulation, boundary segments as edges, holes removed. On a "
       "surface: the restricted Delaunay triangulation, checked for manifoldness and genus.");
-  cmd->add_option("points", args->input, "CSV file of the packing (header x,y,r; x,y,z,r on a surface)")
+  reads_file(cmd->add_option("points", args->input,
+                              "CSV file of the packing (header x,y,r; x,y,z,r on a surface); - for standard input"))
       ->required();
   add_domain_options(cmd, args->domain);
   writes_file(cmd->add_option("--output,-o", args->output,

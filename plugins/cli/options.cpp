@@ -4,7 +4,11 @@
 // text first.
 #include <CLI/CLI.hpp>
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <cctype>
+#include <cerrno>
 #include <cmath>
 #include <cstdint>
 #include <string>
@@ -37,6 +41,47 @@ CLI::Option* add_seed_option(CLI::App* cmd, std::uint64_t& seed) {
 
 CLI::Option* writes_file(CLI::Option* option) {
   return option->transform([](std::string path) { return path == "-" ? std::string("/dev/stdout") : path; });
+}
+
+namespace {
+
+// Standard input copied whole into a file that has no name (unlinked at once), so that
+// a reader may open it more than once (the radius is read before the disks); the path
+// /proc/self/fd/N opens it afresh each time. Empty until "-" is read.
+std::string stdin_copy() {
+  char name[] = "/tmp/disktune-stdin-XXXXXX";
+  const int fd = mkstemp(name);
+  if (fd < 0) throw CLI::ValidationError("-", "cannot keep standard input: no temporary file in /tmp");
+  unlink(name);
+  char buffer[1 << 16];
+  for (ssize_t n; (n = read(STDIN_FILENO, buffer, sizeof buffer)) != 0;) {
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0 || write(fd, buffer, static_cast<std::size_t>(n)) != n)
+      throw CLI::ValidationError("-", "cannot read standard input into /tmp");
+  }
+  return "/proc/self/fd/" + std::to_string(fd);
+}
+
+std::string& stdin_path() {
+  static std::string copy;
+  return copy;
+}
+
+}  // namespace
+
+CLI::Option* reads_file(CLI::Option* option) {
+  return option->transform([](std::string path) {
+    if (path != "-") return path;
+    if (!stdin_path().empty()) throw CLI::ValidationError("-", "only one input can be standard input");
+    return stdin_path() = stdin_copy();
+  });
+}
+
+std::string naming_stdin(std::string message) {
+  const std::string& path = stdin_path();
+  if (path.empty()) return message;
+  for (std::size_t at; (at = message.find(path)) != std::string::npos;) message.replace(at, path.size(), "standard input");
+  return message;
 }
 
 double memory_size(const std::string& text) {

@@ -121,7 +121,8 @@ void add_report_command(CLI::App& app, Action& action) {
       "coverage, maximality, angles, edge lengths, local beta, Voronoi cells, spectrum "
       "(docs/quality.md). On a surface: density, maximality, conflicts, and the restricted "
       "Delaunay mesh's topology, angles, edges, local beta and Hausdorff distance (--json only).");
-  cmd->add_option("points", args->input, "CSV file of the packing (header x,y,r; x,y,z,r on a surface)")
+  reads_file(cmd->add_option("points", args->input,
+                              "CSV file of the packing (header x,y,r; x,y,z,r on a surface); - for standard input"))
       ->required();
   add_domain_options(cmd, args->domain);
   writes_file(cmd->add_option("--json", args->json, "Write the full report (with histograms) as JSON"));

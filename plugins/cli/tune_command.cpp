@@ -152,9 +152,9 @@ void add_tune_command(CLI::App& app, Action& action) {
       ->check(CLI::IsMember(
           {"auto", "void", "repeller", "crystal", "angle", "sift", "attractor", "crystal-eject"}))
       ->capture_default_str();
-  cmd->add_option("--input,-i", args->input,
-                  "Start from this CSV (x,y,r, or x,y,z,r on a surface; a conflict-free maximal "
-                  "packing) instead of a new MPS");
+  reads_file(cmd->add_option("--input,-i", args->input,
+                             "Start from this CSV (x,y,r, or x,y,z,r on a surface; a conflict-free maximal "
+                             "packing; - for standard input) instead of a new MPS"));
   add_seed_option(cmd, args->seed);
   cmd->add_option("--relax", args->relax_sweeps,
                   "After tuning, this many relaxation sweeps: each free disk moves toward a hexagonal "
