@@ -215,6 +215,11 @@ assert j['disktune']['arguments'] == ['report', 'q.csv', '--radius', '0.05', '--
   "$bin" sample --radius 0.05 --seed 3 -o - 2>/dev/null | "$bin" mesh - -o piped.off 2>/dev/null &&
   "$bin" mesh a.csv -o from-file.off 2>/dev/null && cmp -s piped.off from-file.off &&
   pass=$((pass + 1)) || { echo "FAIL - as standard input"; fails=$((fails + 1)); }
+"$bin" report q.csv --radius 0.05 --threads 1 --json one-thread.json 2>/dev/null &&
+  "$bin" report q.csv --radius 0.05 --json all-threads.json 2>/dev/null &&
+  diff <(grep -v '"arguments"' one-thread.json) <(grep -v '"arguments"' all-threads.json) >/dev/null &&
+  pass=$((pass + 1)) || { echo "FAIL report --threads 1 gives the same report"; fails=$((fails + 1)); }
+expect threads-zero 2 "--threads" -- "$bin" report q.csv --radius 0.05 --threads 0
 expect stdin-empty 2 "^disktune: error: standard input:1: empty file" -- "$bin" report - </dev/null
 "$bin" sample --radius 0.05 --seed 3 -o - 2>sample.err >piped.csv && cmp -s piped.csv a.csv && grep -q "^sample: " sample.err && [ ! -e ./- ] &&
   pass=$((pass + 1)) || { echo "FAIL sample -o - on stdout, same CSV, no file named -"; fails=$((fails + 1)); }

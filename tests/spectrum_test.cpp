@@ -136,6 +136,20 @@ TEST(Spectrum, AgreesWithADirectSum) {
   }
 }
 
+// Each thread computes whole rows, so one thread or many give the same powers, bit for
+// bit, and each agrees with the direct sum.
+TEST(Spectrum, OneThreadOrManyGiveTheSamePowers) {
+  const PeriodicBox box(1, 1);
+  Rng rng(12);
+  const Packing mps = sample_mps(box, 0.03, rng);
+  SpectrumOptions one, many, all;
+  one.threads = 1, many.threads = 3;
+  const Spectrum a = measure_spectrum(mps, one), b = measure_spectrum(mps, many), c = measure_spectrum(mps, all);
+  EXPECT_EQ(a.power, b.power);
+  EXPECT_EQ(a.power, c.power);
+  EXPECT_NEAR(a.at(5, -9), direct_power(mps, 5, -9), 1e-9);
+}
+
 TEST(Spectrum, AutomaticWindowReachesFrequencyThreeUnlessTooCostly) {
   // Unit box: normalised frequency 3 is |k| = 1.5 sqrt(N).
   EXPECT_EQ(default_spectrum_window(10000, 1, 1), 151);

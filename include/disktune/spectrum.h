@@ -24,6 +24,8 @@ struct SpectrumOptions {
   /// Largest automatic cost N * K * (2K - 1) (complex multiply-adds; ~1e9 take about
   /// a second on one core). An explicit `window` is not capped.
   double max_cost = 1e10;
+  /// Threads that share the frequency rows; 0: one per core.
+  unsigned threads = 0;
 };
 
 struct Spectrum {

@@ -29,6 +29,7 @@ struct ReportArgs {
   std::string json, svg, png_dir;
   bool no_spectrum = false;
   int spectrum_window = 0;  // 0: automatic
+  unsigned threads = 0;     // 0: one per core
 };
 
 // "26.50..125.32", or "none" for a part of the mesh without triangles (a thin domain
@@ -87,6 +88,7 @@ int run_report(const ReportArgs& given) {
     const auto start = std::chrono::steady_clock::now();
     SpectrumOptions options;
     options.window = args.spectrum_window;
+    options.threads = args.threads;
     spectrum = measure_spectrum(packing, options);
     const std::chrono::duration<double> took = std::chrono::steady_clock::now() - start;
     std::fprintf(stderr, 
@@ -135,6 +137,8 @@ void add_report_command(CLI::App& app, Action& action) {
                   "Spectrum frequencies |kx|, |ky| < K (default: reach normalised frequency 3, "
                   "capped at N K (2K-1) <= 1e10); at most 4096")
       ->check(whole_number(0, kMaxSpectrumWindow, "--spectrum-window"));
+  cmd->add_option("--threads", args->threads, "Threads for the spectrum (default: one per core)")
+      ->check(whole_number(1, 4096, "--threads"));
   cmd->callback([args, &action] { action = [args] { return run_report(*args); }; });
 }
 

@@ -28,6 +28,7 @@ struct RveJob {
   RveMeshSpec mesh;
   std::string output, stats, msh, inp, png_dir, diameters;
   std::size_t realizations = 1;
+  unsigned threads = 0;  // for the realizations; 0: one per core
   bool mesh_options = false;  // --fiber-segments or --element-size given
   bool diameter_given = false;  // --diameter or --diameters
 };
@@ -43,7 +44,7 @@ std::string output_of(const RveJob& job, const std::string& file, std::size_t k)
 
 std::vector<Rve> make_all(const RveJob& job, std::size_t count) {
   try {
-    if (job.realizations > 1) return make_rves(job.spec, job.realizations);
+    if (job.realizations > 1) return make_rves(job.spec, job.realizations, job.threads);
     std::vector<Rve> one(1);
     tune_with_progress(0, count, Method::automatic,
                        [&](const TuneOptions& options) {
@@ -243,6 +244,8 @@ void add_rve_command(CLI::App& app, Action& action) {
                   "spread over the ensemble")
       ->check(whole_number(1, 10000, "--realizations"))
       ->capture_default_str();
+  cmd->add_option("--threads", job->threads, "Threads for the realizations (default: one per core)")
+      ->check(whole_number(1, 4096, "--threads"));
   add_seed_option(cmd, job->spec.seed);
   add_memory_option(cmd, job->spec.max_memory);
   cmd->callback([job, &action, segments, element_size, diameter, listed] {

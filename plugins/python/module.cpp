@@ -294,7 +294,7 @@ PyMesh mesh_of(const PyPacking& packing) {
   return out;
 }
 
-py::object report_of(const PyPacking& packing, bool spectrum) {
+py::object report_of(const PyPacking& packing, bool spectrum, unsigned threads) {
   if (packing.surface) {
     const SurfacePacking& p = *packing.surface;
     py::dict out;
@@ -337,7 +337,9 @@ py::object report_of(const PyPacking& packing, bool spectrum) {
     py::gil_scoped_release released;
     const QualityReport q = measure_quality(p, periodic_delaunay(p), p.max_radius());
     std::optional<Spectrum> s;
-    if (spectrum) s = measure_spectrum(p);
+    SpectrumOptions options;
+    options.threads = threads;
+    if (spectrum) s = measure_spectrum(p, options);
     text = quality_json(q, s ? &*s : nullptr);
   }
   return json_value(text);
@@ -615,8 +617,9 @@ PYBIND11_MODULE(disktune, m) {
   m.def("mesh", &mesh_of, py::arg("packing"),
         "The packing's Delaunay mesh: periodic in the box, constrained in a planar domain, "
         "restricted on a surface.");
-  m.def("report", &report_of, py::arg("packing"), py::kw_only(), py::arg("spectrum") = true,
-        "The quality figures `disktune report --json` writes, as a dict.");
+  m.def("report", &report_of, py::arg("packing"), py::kw_only(), py::arg("spectrum") = true, py::arg("threads") = 0,
+        "The quality figures `disktune report --json` writes, as a dict; the spectrum on `threads` threads "
+        "(0: one per core).");
   m.def("remesh", &remesh_surface, py::arg("surface"), py::kw_only(), py::arg("vertices"),
         py::arg("seed") = 1, py::arg("relax_sweeps") = 30, py::arg("progress") = py::none(),
         "A mesh of the surface with exactly `vertices` vertices on it, from a tuned and relaxed "

@@ -83,7 +83,7 @@ void transform_row(const Points& p, int K, int ky, std::vector<double>& fr,
 /// Fills s.power: rows ky = 0 .. K-1 are computed (shared among threads through an
 /// atomic row counter; each row is computed the same way whoever takes it), and rows
 /// ky < 0 mirror them, as P(-k) = P(k) for real points.
-void periodogram(const Points& points, Spectrum& s) {
+void periodogram(const Points& points, Spectrum& s, unsigned cores) {
   const int K = s.window, side = s.side();
   const double n = static_cast<double>(points.u.size());
   s.power.assign(static_cast<std::size_t>(side) * side, 0.0);
@@ -101,7 +101,8 @@ void periodogram(const Points& points, Spectrum& s) {
       }
     }
   };
-  const int threads = std::clamp(static_cast<int>(std::thread::hardware_concurrency()), 1, K);
+  const unsigned wanted = cores > 0 ? cores : std::thread::hardware_concurrency();
+  const int threads = std::clamp(static_cast<int>(std::min<unsigned>(wanted, 4096)), 1, K);
   std::vector<std::thread> pool;
   for (int t = 1; t < threads; ++t) pool.emplace_back(work);
   work();
@@ -205,7 +206,7 @@ Spectrum measure_spectrum(const Packing& packing, const SpectrumOptions& options
     points.wr.push_back(wr);
     points.wi.push_back(wi);
   }
-  periodogram(points, s);
+  periodogram(points, s, options.threads);
   radial_statistics(s);
   return s;
 }

@@ -167,6 +167,7 @@ def test_report_is_a_dict_of_the_json_report():
     assert r["count"] == len(s)
     with_spectrum = disktune.report(s)
     assert "spectrum" in with_spectrum
+    assert disktune.report(s, threads=1)["spectrum"] == with_spectrum["spectrum"]
 
 
 def test_csv_written_reads_back():
