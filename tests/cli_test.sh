@@ -35,6 +35,14 @@ absent() {  # absent NAME FILE
 expect help 0 "sample" -- "$bin" --help
 expect sample-help 0 "--radius" -- "$bin" sample --help
 expect version 0 "^disktune [0-9]+\.[0-9]+\.[0-9]+$" -- "$bin" --version
+# The manual page and the bash completion come from the command's own options
+"$bin" man -o disktune.1 2>/dev/null && head -n 1 disktune.1 | grep -q '^\.TH DISKTUNE 1 ' &&
+  for c in sample tune mesh report sweep remesh rve; do grep -qx "\.SS $c" disktune.1 || exit 1; done &&
+  grep -q '^\.B \\-\\-target\\-fraction' disktune.1 && pass=$((pass + 1)) || { echo "FAIL man page"; fails=$((fails + 1)); }
+"$bin" completion >disktune.bash 2>/dev/null &&
+  [ "$(bash -c 'source ./disktune.bash; COMP_WORDS=(disktune sam); COMP_CWORD=1; _disktune; echo "${COMPREPLY[*]}"')" = "sample" ] &&
+  [ "$(bash -c 'source ./disktune.bash; COMP_WORDS=(disktune tune --target-f); COMP_CWORD=2; _disktune; echo "${COMPREPLY[*]}"')" = "--target-fraction" ] &&
+  pass=$((pass + 1)) || { echo "FAIL bash completion"; fails=$((fails + 1)); }
 [ "$("$bin" --version 2>/dev/null)" = "$(sed -n 's/^project(disktune VERSION \([0-9.]*\).*/disktune \1/p' "$data/../CMakeLists.txt")" ] &&
   pass=$((pass + 1)) || { echo "FAIL --version on stdout, the project's version"; fails=$((fails + 1)); }
 expect sample 0 "^sample: [0-9]+ disks, eta = 0\.5[0-9]+" -- "$bin" sample --radius 0.05 --seed 3 --output a.csv --svg a.svg

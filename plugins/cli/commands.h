@@ -79,6 +79,8 @@ void add_report_command(CLI::App& app, Action& action);
 void add_sweep_command(CLI::App& app, Action& action);
 void add_remesh_command(CLI::App& app, Action& action);
 void add_rve_command(CLI::App& app, Action& action);
+/// `man` and `completion`: the manual page and a bash completion script, from the app itself.
+void add_docs_commands(CLI::App& app, Action& action);
 
 /// One sampling job, as `disktune sample` and the demo run it.
 struct SampleJob {

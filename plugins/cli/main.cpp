@@ -114,6 +114,7 @@ int main(int argc, char** argv) {
   add_sweep_command(app, action);
   add_remesh_command(app, action);
   add_rve_command(app, action);
+  add_docs_commands(app, action);
 
   try {
     remember_invocation(argc, argv);
