@@ -19,7 +19,7 @@ case "$mode" in run | test | bench) ;; *)
 esac
 cd "$(dirname "$0")/.."
 
-packages=(g++ cmake make libcgal-dev libcli11-dev libgtest-dev nlohmann-json3-dev libpng-dev pkgconf libmuparser-dev libopenmesh-dev libeigen3-dev libgmsh-dev pybind11-dev python3-dev python3-numpy)
+packages=(g++ cmake make libcgal-dev libcli11-dev libgtest-dev nlohmann-json3-dev libpng-dev libcairo2-dev pkgconf libmuparser-dev libopenmesh-dev libeigen3-dev libgmsh-dev pybind11-dev python3-dev python3-numpy)
 # The checking build: clang with libFuzzer and its sanitizer runtimes (not a dependency
 # of the clang package).
 [ "$mode" = test ] && packages+=(clang libclang-rt-14-dev python3-meshio python3-pytest)

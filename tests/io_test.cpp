@@ -275,10 +275,16 @@ TEST(Svg, DrawsEveryDiskAndItsSeamImages) {
   std::stringstream ss;
   ss << in.rdbuf();
   const std::string svg = ss.str();
+  // The disks in the frame, then the legend: a sample of each kind of disk and its words.
+  const std::size_t legend = svg.find("<g font-family");
+  ASSERT_NE(legend, std::string::npos);
   std::size_t circles = 0;
-  for (std::size_t at = svg.find("<circle"); at != std::string::npos; at = svg.find("<circle", at + 1)) ++circles;
+  for (std::size_t at = svg.find("<circle"); at < legend; at = svg.find("<circle", at + 1)) ++circles;
   EXPECT_EQ(circles, 5u);
   EXPECT_NE(svg.find("#d62728"), std::string::npos);  // the fixed disk's color
+  EXPECT_NE(svg.find("half its radius", legend), std::string::npos);
+  EXPECT_NE(svg.find("held on the boundary", legend), std::string::npos);
+  EXPECT_EQ(svg.find("frozen", legend), std::string::npos);  // none here
   EXPECT_NE(svg.find("</svg>"), std::string::npos);
 }
 

@@ -1,18 +1,23 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The report's PNG pictures: decoded here with libpng, of the expected size and not
-// blank; a missing folder is refused before anything is written. The fiber cell's
-// picture: its blue pixels are where the fibers are, counted against the fraction.
+// The report's PNG pictures: decoded here with libpng, of the expected size, not blank,
+// with words (title and axis titles) where they belong; the spectrum's gray levels are
+// the powers, block by block; a missing folder is refused before anything is written.
+// The fiber cell's picture: its blue pixels are where the fibers are, counted against
+// the fraction.
 #include "disktune/report_pictures.h"
 
 #include <gtest/gtest.h>
 #include <png.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <set>
 #include <vector>
 
 #include "disktune/errors.h"
 #include "disktune/rve.h"
+#include "../src/io/spectrum_layout.h"
 #include "disktune/sampling.h"
 #include "test_util.h"
 
@@ -47,6 +52,14 @@ Decoded decode(const fs::path& file) {
   return d;
 }
 
+// Dark pixels (text, lines) in the rectangle [x0, x1) x [y0, y1).
+std::size_t dark_pixels(const Decoded& d, unsigned x0, unsigned y0, unsigned x1, unsigned y1) {
+  std::size_t n = 0;
+  for (unsigned y = y0; y < std::min(y1, d.height); ++y)
+    for (unsigned x = x0; x < std::min(x1, d.width); ++x) n += d.rgb[(static_cast<std::size_t>(y) * d.width + x) * 3] < 100;
+  return n;
+}
+
 std::size_t distinct_colors(const Decoded& d) {
   std::set<unsigned> colors;
   for (std::size_t i = 0; i + 2 < d.rgb.size(); i += 3) {
@@ -68,17 +81,31 @@ TEST(ReportPictures, WritesFiveDecodablePictures) {
     EXPECT_EQ(d.width, 640u) << name;
     EXPECT_EQ(d.height, 400u) << name;
     EXPECT_GE(distinct_colors(d), 3u) << name;  // white, black axes, blue data
+    // A title above the frame, an axis title below the numbers, one left of them.
+    EXPECT_GT(dark_pixels(d, 100, 0, 600, 26), 40u) << name << ": title";
+    EXPECT_GT(dark_pixels(d, 100, 385, 600, 400), 40u) << name << ": x axis title";
+    EXPECT_GT(dark_pixels(d, 0, 50, 26, 350), 40u) << name << ": y axis title";
   }
   const Decoded image = decode(dir.path / "spectrum.png");
-  const unsigned side = static_cast<unsigned>(s.side());
-  EXPECT_EQ(image.width, image.height);
-  EXPECT_EQ(image.width % side, 0u);
-  EXPECT_GE(image.width, 512u);
+  const detail::SpectrumLayout at = detail::spectrum_layout(s);
+  const int K = s.window, side = s.side(), extent = side * at.zoom;
+  EXPECT_GE(extent, 512);
+  ASSERT_GE(image.width, static_cast<unsigned>(at.left + extent));
+  ASSERT_GE(image.height, static_cast<unsigned>(at.top + extent));
+  // Every frequency's block, at its middle pixel: the gray of its power, log10 P from -2
+  // (black) to 1 (white), ky growing upward; DC (set to 0) black.
+  std::size_t wrong = 0;
+  for (int ky = 1 - K; ky < K; ++ky) {
+    for (int kx = 1 - K; kx < K; ++kx) {
+      const double p = s.at(kx, ky);
+      const double t = p > 0 ? std::clamp((std::log10(p) + 2) / 3, 0.0, 1.0) : 0;
+      const std::size_t x = at.left + (kx + K - 1) * at.zoom + at.zoom / 2, y = at.top + (K - 1 - ky) * at.zoom + at.zoom / 2;
+      wrong += std::abs(image.rgb[(y * image.width + x) * 3] - std::lround(255 * t)) > 1;
+    }
+  }
+  EXPECT_EQ(wrong, 0u);
   EXPECT_GT(distinct_colors(image), 50u);  // a gray ramp, not a flat picture
-  // DC at the center, set to 0: black.
-  const std::size_t c =
-      (image.height / 2 * static_cast<std::size_t>(image.width) + image.width / 2) * 3;
-  EXPECT_EQ(image.rgb[c], 0);
+  EXPECT_GT(dark_pixels(image, at.left, 0, at.left + extent, at.top - 4), 40u) << "title";
   std::size_t files = 0;
   for (const auto& entry : fs::directory_iterator(dir.path)) files += entry.is_regular_file();
   EXPECT_EQ(files, 5u);  // and no temporaries left
@@ -108,7 +135,15 @@ TEST(ReportPictures, FiberPicturesShowTheFibersWhereTheyAre) {
     const Decoded d = decode(dir.path / name);
     EXPECT_EQ(d.width, 640u) << name;
     EXPECT_GE(distinct_colors(d), 3u) << name;
+    EXPECT_GT(dark_pixels(d, 100, 0, 600, 26), 40u) << name << ": title";
+    EXPECT_GT(dark_pixels(d, 0, 50, 26, 350), 40u) << name << ": y axis title";
   }
+  // The curves' legend names the arrangement (blue), the sample (orange) and the
+  // reference (gray): three line samples of those colors at its left end.
+  const Decoded g = decode(dir.path / "pair_correlation.png");
+  std::size_t orange = 0;
+  for (std::size_t i = 0; i + 2 < g.rgb.size(); i += 3) orange += g.rgb[i] > 200 && g.rgb[i + 1] > 90 && g.rgb[i + 1] < 150 && g.rgb[i + 2] < 60;
+  EXPECT_GT(orange, 20u);
   const Decoded cell = decode(dir.path / "cell.png");
   ASSERT_EQ(cell.width, 800u);
   ASSERT_EQ(cell.height, 400u);  // the cell's aspect

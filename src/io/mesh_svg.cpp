@@ -15,7 +15,12 @@ using Edges = std::vector<std::array<std::uint32_t, 2>>;
 /// vertices[a]..vertices[b] once, every periodic image that reaches into the frame.
 void write_edges_svg(const std::string& path, const std::vector<Vec2>& vertices, const Edges& edges,
                      const Packing& packing, const MeshSvgStyle& style) {
-  const detail::SvgCanvas canvas(packing.frame(), style.pixels);
+  bool fixed = false;
+  for (const DiskId id : packing.ids()) fixed |= (packing.flags(id) & kFixed) != 0;
+  std::vector<detail::SvgLegend> legend{{"#d0d0d0", "a disk at half its radius (a mesh vertex)"}};
+  if (fixed) legend.push_back({"#f0a0a0", "a disk held on the boundary"});
+  legend.push_back({"#1f4e9c", "an edge of the Delaunay mesh", true});
+  const detail::SvgCanvas canvas(packing.frame(), style.pixels, legend);
   write_file_atomically(path, [&](std::ostream& out) {
     canvas.begin(out);
     char buf[160];

@@ -9,7 +9,8 @@
 namespace disktune::detail {
 namespace {
 
-constexpr Rgb kBlack{0, 0, 0}, kWhite{255, 255, 255}, kGray{190, 190, 190};
+constexpr Rgb kBlack{0, 0, 0}, kWhite{255, 255, 255};
+constexpr double kNumberSize = 11, kLabelSize = 13, kTitleSize = 15;
 
 /// A round tick step (1, 2 or 5 times a power of ten) giving about five ticks.
 double tick_step(double span) {
@@ -28,67 +29,72 @@ std::string number(double v) {
 
 }  // namespace
 
-Plot::Plot(int width, int height, double x0, double x1, double y0, double y1)
+Plot::Plot(int width, int height, double x0, double x1, double y0, double y1, PlotText text)
     : raster_(width, height, kWhite),
-      left_(60),
+      text_(std::move(text)),
+      left_(72),
       right_(width - 15),
-      top_(15),
-      bottom_(height - 30),
+      top_(34),
+      bottom_(height - 46),
       x0_(x0),
       x1_(x1 > x0 ? x1 : x0 + 1),
       y0_(y0),
       y1_(y1 > y0 ? y1 : y0 + 1) {}
 
-int Plot::px(double x) const {
-  return left_ + static_cast<int>(std::lround((x - x0_) / (x1_ - x0_) * (right_ - left_)));
-}
-int Plot::py(double y) const {
-  return bottom_ - static_cast<int>(std::lround((y - y0_) / (y1_ - y0_) * (bottom_ - top_)));
-}
+double Plot::px(double x) const { return left_ + (x - x0_) / (x1_ - x0_) * (right_ - left_); }
+double Plot::py(double y) const { return bottom_ - (y - y0_) / (y1_ - y0_) * (bottom_ - top_); }
 
 void Plot::axes() {
-  // Clear the margins, so data clipped by nothing else ends at the frame.
-  raster_.fill_rect(0, 0, raster_.width() - 1, top_ - 1, kWhite);
-  raster_.fill_rect(0, bottom_ + 1, raster_.width() - 1, raster_.height() - 1, kWhite);
-  raster_.fill_rect(0, 0, left_ - 1, raster_.height() - 1, kWhite);
-  raster_.fill_rect(right_ + 1, 0, raster_.width() - 1, raster_.height() - 1, kWhite);
-  raster_.line(left_, top_, right_, top_, kBlack);
-  raster_.line(left_, bottom_, right_, bottom_, kBlack);
-  raster_.line(left_, top_, left_, bottom_, kBlack);
-  raster_.line(right_, top_, right_, bottom_, kBlack);
+  Raster& r = raster_;
+  r.unclip();
+  const double l = left_ + 0.5, rt = right_ + 0.5, t = top_ + 0.5, b = bottom_ + 0.5;
+  r.polyline({{l, t}, {rt, t}, {rt, b}, {l, b}, {l, t}}, kBlack, 1);
   const double sx = tick_step(x1_ - x0_), sy = tick_step(y1_ - y0_);
-  for (double t = std::ceil(x0_ / sx - 1e-9) * sx; t <= x1_ + 1e-9 * sx; t += sx) {
-    const int x = px(t);
-    raster_.line(x, bottom_, x, bottom_ + 4, kBlack);
-    const std::string s = number(t);
-    raster_.text(x - Raster::text_width(s) / 2, bottom_ + 8, s, kBlack);
+  for (double v = std::ceil(x0_ / sx - 1e-9) * sx; v <= x1_ + 1e-9 * sx; v += sx) {
+    const double x = std::round(px(v)) + 0.5;
+    r.line(x, b, x, b + 4, kBlack);
+    r.text(x, b + 17, number(v), kNumberSize, kBlack, Raster::Align::center);
   }
-  for (double t = std::ceil(y0_ / sy - 1e-9) * sy; t <= y1_ + 1e-9 * sy; t += sy) {
-    const int y = py(t);
-    raster_.line(left_ - 4, y, left_, y, kBlack);
-    const std::string s = number(t);
-    raster_.text(left_ - 7 - Raster::text_width(s), y - 3, s, kBlack);
+  for (double v = std::ceil(y0_ / sy - 1e-9) * sy; v <= y1_ + 1e-9 * sy; v += sy) {
+    const double y = std::round(py(v)) + 0.5;
+    r.line(l - 4, y, l, y, kBlack);
+    r.text(l - 7, y + 4, number(v), kNumberSize, kBlack, Raster::Align::right);
+  }
+  r.text((left_ + right_) / 2.0, top_ - 12, text_.title, kTitleSize, kBlack, Raster::Align::center);
+  r.text((left_ + right_) / 2.0, r.height() - 10, text_.x_axis, kLabelSize, kBlack, Raster::Align::center);
+  r.text(18, (top_ + bottom_) / 2.0, text_.y_axis, kLabelSize, kBlack, Raster::Align::center, true);
+  if (legend_.empty()) return;
+  // Top right inside the frame, on white: a line sample and the name of each entry.
+  double widest = 0;
+  for (const Entry& e : legend_) widest = std::max(widest, r.text_width(e.name, kNumberSize));
+  const double row = 16, x1 = right_ - 6, x0 = x1 - widest - 40, y0 = top_ + 6;
+  r.fill_rect(static_cast<int>(x0), static_cast<int>(y0), static_cast<int>(x1), static_cast<int>(y0 + row * legend_.size() + 6),
+              kWhite);
+  for (std::size_t k = 0; k < legend_.size(); ++k) {
+    const double y = y0 + 12 + row * k;
+    r.line(x0 + 6, y - 4, x0 + 28, y - 4, legend_[k].color, 2, legend_[k].dashed);
+    r.text(x0 + 34, y, legend_[k].name, kNumberSize, kBlack);
   }
 }
 
-void Plot::reference(double y) {
+void Plot::reference(double y, Rgb color, const std::string& name) {
+  if (!name.empty()) legend_.push_back({name, color, true});
   if (y < y0_ || y > y1_) return;
-  for (int x = left_; x <= right_; x += 6)
-    raster_.line(x, py(y), std::min(x + 3, right_), py(y), kGray);
+  raster_.line(left_, py(y), right_, py(y), color, 1.5, true);
 }
 
-void Plot::polyline(const std::vector<std::array<double, 2>>& points, Rgb color) {
-  // Clamp y to just outside the area; axes() then clears the margins.
-  auto y_of = [&](double y) { return std::clamp(py(y), top_ - 1, bottom_ + 1); };
-  for (std::size_t i = 1; i < points.size(); ++i) {
-    raster_.line(px(points[i - 1][0]), y_of(points[i - 1][1]), px(points[i][0]), y_of(points[i][1]),
-                 color);
-  }
+void Plot::polyline(const std::vector<std::array<double, 2>>& points, Rgb color, const std::string& name) {
+  if (!name.empty()) legend_.push_back({name, color, false});
+  std::vector<std::array<double, 2>> pixels;
+  for (const auto& p : points) pixels.push_back({px(p[0]), py(p[1])});
+  raster_.clip(left_, top_, right_ + 1, bottom_ + 1);
+  raster_.polyline(pixels, color);
+  raster_.unclip();
 }
 
 void Plot::bar(double xa, double xb, double y, Rgb color) {
-  const int a = px(xa), b = std::max(px(xb) - 1, a);
-  raster_.fill_rect(a, py(0), b, std::max(py(y), top_), color);
+  const int a = static_cast<int>(std::lround(px(xa))), b = std::max(static_cast<int>(std::lround(px(xb))) - 1, a);
+  raster_.fill_rect(a, static_cast<int>(std::lround(py(0))), b, std::max(static_cast<int>(std::lround(py(y))), top_), color);
 }
 
 }  // namespace disktune::detail

@@ -1,36 +1,53 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Line plots and bar charts on a Raster (internal): a frame with numbered ticks and a
-// map from data to pixels, enough for the report's pictures.
+// Line plots and bar charts on a Raster (internal): a frame with numbered ticks, a
+// title, axis titles and a legend, and a map from data to pixels; the report's and the
+// fiber statistics' pictures.
 #pragma once
 
 #include <array>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "raster.h"
 
 namespace disktune::detail {
 
+struct PlotText {
+  std::string title, x_axis, y_axis;
+};
+
 class Plot {
  public:
   /// A white width x height picture whose plot area shows [x0, x1] x [y0, y1].
-  Plot(int width, int height, double x0, double x1, double y0, double y1);
+  Plot(int width, int height, double x0, double x1, double y0, double y1, PlotText text);
 
-  /// The frame, ticks at round steps and their numbers; call after drawing the data.
+  /// The frame, ticks at round steps and their numbers, the titles and the legend; call
+  /// after drawing the data.
   void axes();
-  /// A horizontal reference line at y (light gray), under the data.
-  void reference(double y);
-  /// Line segments through the points (clipped to the plot area).
-  void polyline(const std::vector<std::array<double, 2>>& points, Rgb color);
+  /// A dashed horizontal reference line at y, under the data, named in the legend.
+  void reference(double y, Rgb color, const std::string& name);
+  /// Line segments through the points (clipped to the plot area), named in the legend
+  /// unless `name` is empty.
+  void polyline(const std::vector<std::array<double, 2>>& points, Rgb color, const std::string& name = {});
   /// A bar over [xa, xb] from 0 up to y.
   void bar(double xa, double xb, double y, Rgb color);
 
   const Raster& raster() const { return raster_; }
+  Raster& raster() { return raster_; }
 
  private:
-  int px(double x) const;
-  int py(double y) const;
+  double px(double x) const;
+  double py(double y) const;
 
+  struct Entry {
+    std::string name;
+    Rgb color;
+    bool dashed;
+  };
   Raster raster_;
+  PlotText text_;
+  std::vector<Entry> legend_;
   int left_, right_, top_, bottom_;  // the plot area in pixels
   double x0_, x1_, y0_, y1_;
 };

@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "raster.h"
 
-#include <png.h>
+#include <cairo.h>
 
 #include <algorithm>
-#include <cstdlib>
+#include <sstream>
+#include <utility>
 
 #include "disktune/errors.h"
 #include "disktune/io.h"
@@ -12,96 +13,103 @@
 namespace disktune::detail {
 namespace {
 
-/// 5 x 7 glyphs, one byte a row, bit 4 the leftmost pixel.
-struct Glyph {
-  char c;
-  std::uint8_t rows[7];
-};
-constexpr Glyph kFont[] = {
-    {'0', {0x0E, 0x11, 0x13, 0x15, 0x19, 0x11, 0x0E}},
-    {'1', {0x04, 0x0C, 0x04, 0x04, 0x04, 0x04, 0x0E}},
-    {'2', {0x0E, 0x11, 0x01, 0x02, 0x04, 0x08, 0x1F}},
-    {'3', {0x1F, 0x02, 0x04, 0x02, 0x01, 0x11, 0x0E}},
-    {'4', {0x02, 0x06, 0x0A, 0x12, 0x1F, 0x02, 0x02}},
-    {'5', {0x1F, 0x10, 0x1E, 0x01, 0x01, 0x11, 0x0E}},
-    {'6', {0x06, 0x08, 0x10, 0x1E, 0x11, 0x11, 0x0E}},
-    {'7', {0x1F, 0x01, 0x02, 0x04, 0x08, 0x08, 0x08}},
-    {'8', {0x0E, 0x11, 0x11, 0x0E, 0x11, 0x11, 0x0E}},
-    {'9', {0x0E, 0x11, 0x11, 0x0F, 0x01, 0x02, 0x0C}},
-    {'.', {0x00, 0x00, 0x00, 0x00, 0x00, 0x0C, 0x0C}},
-    {'-', {0x00, 0x00, 0x00, 0x1F, 0x00, 0x00, 0x00}},
-    {'+', {0x00, 0x04, 0x04, 0x1F, 0x04, 0x04, 0x00}},
-    {'e', {0x00, 0x00, 0x0E, 0x11, 0x1F, 0x10, 0x0E}},
-};
+void set_color(cairo_t* cr, Rgb c) { cairo_set_source_rgb(cr, c.r / 255.0, c.g / 255.0, c.b / 255.0); }
+
+cairo_status_t append(void* closure, const unsigned char* data, unsigned int length) {
+  static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(data), length);
+  return CAIRO_STATUS_SUCCESS;
+}
 
 }  // namespace
 
-Raster::Raster(int width, int height, Rgb background)
-    : w_(width), h_(height), rgb_(static_cast<std::size_t>(width) * height * 3) {
-  for (std::size_t i = 0; i < rgb_.size(); i += 3) {
-    rgb_[i] = background.r, rgb_[i + 1] = background.g, rgb_[i + 2] = background.b;
+Raster::Raster(int width, int height, Rgb background) : w_(width), h_(height) {
+  surface_ = cairo_image_surface_create(CAIRO_FORMAT_RGB24, width, height);
+  cr_ = cairo_create(surface_);
+  if (cairo_status(cr_) != CAIRO_STATUS_SUCCESS) {
+    const std::string why = cairo_status_to_string(cairo_status(cr_));
+    cairo_destroy(cr_);
+    cairo_surface_destroy(surface_);
+    throw IoError("cannot make a " + std::to_string(width) + " x " + std::to_string(height) + " picture: " + why);
   }
+  cairo_select_font_face(cr_, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+  fill_rect(0, 0, width - 1, height - 1, background);
 }
 
-void Raster::set(int x, int y, Rgb c) {
-  if (x < 0 || y < 0 || x >= w_ || y >= h_) return;
-  const std::size_t i = (static_cast<std::size_t>(y) * w_ + x) * 3;
-  rgb_[i] = c.r, rgb_[i + 1] = c.g, rgb_[i + 2] = c.b;
+Raster::~Raster() {
+  if (cr_) cairo_destroy(cr_);
+  if (surface_) cairo_surface_destroy(surface_);
+}
+
+Raster::Raster(Raster&& other) noexcept
+    : w_(other.w_), h_(other.h_), surface_(std::exchange(other.surface_, nullptr)), cr_(std::exchange(other.cr_, nullptr)) {}
+
+Raster& Raster::operator=(Raster&& other) noexcept {
+  std::swap(w_, other.w_), std::swap(h_, other.h_);
+  std::swap(surface_, other.surface_), std::swap(cr_, other.cr_);
+  return *this;
 }
 
 void Raster::fill_rect(int x0, int y0, int x1, int y1, Rgb c) {
   if (x0 > x1) std::swap(x0, x1);
   if (y0 > y1) std::swap(y0, y1);
-  for (int y = std::max(y0, 0); y <= std::min(y1, h_ - 1); ++y) {
-    for (int x = std::max(x0, 0); x <= std::min(x1, w_ - 1); ++x) set(x, y, c);
-  }
+  // Whole pixels: a rectangle on pixel edges covers each pixel fully or not at all.
+  cairo_rectangle(cr_, x0, y0, x1 - x0 + 1, y1 - y0 + 1);
+  set_color(cr_, c);
+  cairo_fill(cr_);
 }
 
-void Raster::line(int x0, int y0, int x1, int y1, Rgb c) {
-  const int dx = std::abs(x1 - x0), dy = -std::abs(y1 - y0);
-  const int sx = x0 < x1 ? 1 : -1, sy = y0 < y1 ? 1 : -1;
-  for (int err = dx + dy;;) {
-    set(x0, y0, c);
-    if (x0 == x1 && y0 == y1) return;
-    const int e2 = 2 * err;
-    if (e2 >= dy) err += dy, x0 += sx;
-    if (e2 <= dx) err += dx, y0 += sy;
-  }
+void Raster::line(double x0, double y0, double x1, double y1, Rgb c, double width, bool dashed) {
+  polyline({{x0, y0}, {x1, y1}}, c, width, dashed);
 }
 
-void Raster::text(int x, int y, const std::string& text, Rgb c) {
-  for (char ch : text) {
-    for (const Glyph& g : kFont) {
-      if (g.c != ch) continue;
-      for (int row = 0; row < 7; ++row) {
-        for (int col = 0; col < 5; ++col) {
-          if (g.rows[row] & (0x10 >> col)) set(x + col, y + row, c);
-        }
-      }
-    }
-    x += 6;
-  }
+void Raster::polyline(const std::vector<std::array<double, 2>>& points, Rgb c, double width, bool dashed) {
+  if (points.size() < 2) return;
+  cairo_move_to(cr_, points[0][0], points[0][1]);
+  for (std::size_t i = 1; i < points.size(); ++i) cairo_line_to(cr_, points[i][0], points[i][1]);
+  const double dash[] = {4, 3};
+  cairo_set_dash(cr_, dash, dashed ? 2 : 0, 0);
+  cairo_set_line_width(cr_, width);
+  cairo_set_line_join(cr_, CAIRO_LINE_JOIN_ROUND);
+  set_color(cr_, c);
+  cairo_stroke(cr_);
+  cairo_set_dash(cr_, dash, 0, 0);
+}
+
+void Raster::clip(double x0, double y0, double x1, double y1) {
+  cairo_reset_clip(cr_);
+  cairo_rectangle(cr_, x0, y0, x1 - x0, y1 - y0);
+  cairo_clip(cr_);
+}
+
+void Raster::unclip() { cairo_reset_clip(cr_); }
+
+double Raster::text_width(const std::string& text, double size) const {
+  cairo_set_font_size(cr_, size);
+  cairo_text_extents_t e;
+  cairo_text_extents(cr_, text.c_str(), &e);
+  return e.x_advance;
+}
+
+void Raster::text(double x, double y, const std::string& text, double size, Rgb c, Align align, bool upward) {
+  const double shift = align == Align::left ? 0 : align == Align::center ? text_width(text, size) / 2 : text_width(text, size);
+  cairo_save(cr_);
+  cairo_translate(cr_, x, y);
+  if (upward) cairo_rotate(cr_, -1.5707963267948966);
+  cairo_move_to(cr_, -shift, 0);
+  cairo_set_font_size(cr_, size);
+  set_color(cr_, c);
+  cairo_show_text(cr_, text.c_str());
+  cairo_restore(cr_);
 }
 
 void write_png(const std::string& path, const Raster& raster) {
-  png_image image{};
-  image.version = PNG_IMAGE_VERSION;
-  image.width = static_cast<png_uint_32>(raster.width());
-  image.height = static_cast<png_uint_32>(raster.height());
-  image.format = PNG_FORMAT_RGB;
-  png_alloc_size_t size = 0;
-  std::vector<char> encoded;
-  if (png_image_write_get_memory_size(image, size, 0, raster.bytes().data(), 0, nullptr)) {
-    encoded.resize(size);
-    if (!png_image_write_to_memory(&image, encoded.data(), &size, 0, raster.bytes().data(), 0,
-                                   nullptr)) {
-      size = 0;
-    }
+  cairo_surface_flush(raster.surface());
+  std::string encoded;
+  const cairo_status_t status = cairo_surface_write_to_png_stream(raster.surface(), append, &encoded);
+  if (status != CAIRO_STATUS_SUCCESS) {
+    throw IoError("cannot encode the PNG picture " + path + ": cairo says: " + cairo_status_to_string(status));
   }
-  if (size == 0) {
-    throw IoError("cannot encode the PNG picture " + path + ": libpng says: " + image.message);
-  }
-  write_file_atomically(path, [&](std::ostream& out) { out.write(encoded.data(), size); });
+  write_file_atomically(path, [&](std::ostream& out) { out.write(encoded.data(), static_cast<std::streamsize>(encoded.size())); });
 }
 
 }  // namespace disktune::detail

@@ -1,11 +1,16 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// A small RGB raster for the PNG pictures (internal): pixels, filled rectangles, lines
-// and numbers in a built-in 5 x 7 font, so no font or drawing library is needed.
+// A picture for the PNG files (internal), drawn with cairo: pixel-exact filled
+// rectangles (the cell and spectrum pictures are judged pixel by pixel), antialiased
+// lines and text in the system's sans-serif font (axis titles, legends).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
+
+typedef struct _cairo_surface cairo_surface_t;
+typedef struct _cairo cairo_t;
 
 namespace disktune::detail {
 
@@ -16,28 +21,43 @@ struct Rgb {
 class Raster {
  public:
   Raster(int width, int height, Rgb background);
+  ~Raster();
+  Raster(Raster&& other) noexcept;
+  Raster& operator=(Raster&& other) noexcept;
+  Raster(const Raster&) = delete;
+  Raster& operator=(const Raster&) = delete;
 
   int width() const { return w_; }
   int height() const { return h_; }
-  /// Rows top to bottom, three bytes a pixel: what PNG_FORMAT_RGB expects.
-  const std::vector<std::uint8_t>& bytes() const { return rgb_; }
 
-  /// Pixels outside the raster are ignored, so shapes may cross its border.
-  void set(int x, int y, Rgb c);
-  void fill_rect(int x0, int y0, int x1, int y1, Rgb c);  // inclusive corners, any order
-  void line(int x0, int y0, int x1, int y1, Rgb c);       // Bresenham, both ends drawn
-  /// Draws `text` (digits, '.', '-', '+', 'e' and space; others as blanks) with its top
-  /// left corner at (x, y); each glyph is 6 pixels wide with the gap.
-  void text(int x, int y, const std::string& text, Rgb c);
-  static int text_width(const std::string& text) { return 6 * static_cast<int>(text.size()) - 1; }
+  /// Every pixel from (x0, y0) to (x1, y1), corners included, in any order; exactly
+  /// these pixels, in exactly this color. Outside the picture: ignored.
+  void fill_rect(int x0, int y0, int x1, int y1, Rgb c);
+  /// An antialiased line (pixel centers at .5), `width` pixels wide, dashed if asked.
+  void line(double x0, double y0, double x1, double y1, Rgb c, double width = 1, bool dashed = false);
+  /// Line segments through points given in pixels.
+  void polyline(const std::vector<std::array<double, 2>>& points, Rgb c, double width = 1.5, bool dashed = false);
+  /// Drawing limited to a rectangle until unclip().
+  void clip(double x0, double y0, double x1, double y1);
+  void unclip();
+
+  enum class Align { left, center, right };
+  /// `text` `size` pixels high with its baseline at y and x its left end, middle or right
+  /// end; with `upward` turned a quarter to read from bottom to top (x, y then the
+  /// baseline's anchor after the turn).
+  void text(double x, double y, const std::string& text, double size, Rgb c, Align align = Align::left,
+            bool upward = false);
+  double text_width(const std::string& text, double size) const;
+
+  cairo_surface_t* surface() const { return surface_; }
 
  private:
   int w_, h_;
-  std::vector<std::uint8_t> rgb_;
+  cairo_surface_t* surface_ = nullptr;
+  cairo_t* cr_ = nullptr;
 };
 
-/// Writes the raster as a PNG file through write_file_atomically (libpng's simplified
-/// API, which reports errors by return value: no longjmp through C++ frames).
+/// Writes the picture as an RGB PNG file through write_file_atomically.
 void write_png(const std::string& path, const Raster& raster);
 
 }  // namespace disktune::detail

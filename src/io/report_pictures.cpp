@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <utility>
 #include <vector>
@@ -10,56 +11,102 @@
 #include "disktune/errors.h"
 #include "plot.h"
 #include "raster.h"
+#include "spectrum_layout.h"
 
 namespace disktune {
 namespace {
 
 using detail::Plot;
 using detail::Raster;
+using detail::PlotText;
 using detail::Rgb;
 
 constexpr int kWidth = 640, kHeight = 400;
 constexpr Rgb kBlue{31, 90, 180};
 constexpr Rgb kOrange{230, 120, 20};
+constexpr Rgb kGray{150, 150, 150};
+constexpr Rgb kBlack{0, 0, 0};
+constexpr Rgb kWhiteBg{255, 255, 255};
 // The spectrum's gray scale: log10 P from -2 (black) to 1 (white). A maximal sample's
 // low-frequency gap (P ~ 0.01) is black, its ring (P ~ 2) light, a lattice peak white.
 constexpr double kLogLo = -2, kLogHi = 1;
 
+// The powers as gray levels (log10 P from kLogLo, black, to kLogHi, white), framed by
+// the normalised frequency along kx and ky, with a gray bar for the scale.
 Raster spectrum_image(const Spectrum& s) {
   const int side = s.side(), K = s.window;
-  const int zoom = (512 + side - 1) / side;  // at least 512 pixels: small windows in blocks
-  Raster r(side * zoom, side * zoom, {0, 0, 0});
+  const detail::SpectrumLayout at = detail::spectrum_layout(s);
+  const int extent = side * at.zoom, bar = at.left + extent + 30;
+  Raster r(bar + 90, at.top + extent + 50, kWhiteBg);
   for (int row = 0; row < side; ++row) {
     for (int col = 0; col < side; ++col) {
       const double p = s.at(col - (K - 1), (K - 1) - row);  // top row is the highest ky
       const double t = p > 0 ? (std::log10(p) - kLogLo) / (kLogHi - kLogLo) : 0;
       const auto g = static_cast<std::uint8_t>(std::lround(255 * std::clamp(t, 0.0, 1.0)));
-      r.fill_rect(col * zoom, row * zoom, col * zoom + zoom - 1, row * zoom + zoom - 1, {g, g, g});
+      const int x = at.left + col * at.zoom, y = at.top + row * at.zoom;
+      r.fill_rect(x, y, x + at.zoom - 1, y + at.zoom - 1, {g, g, g});
     }
   }
+  // Ticks at round normalised frequencies: (kx, ky) = (k W, k H) / unit for frequency k.
+  const double center_x = at.left + (K - 1 + 0.5) * at.zoom, center_y = at.top + (K - 1 + 0.5) * at.zoom;
+  const double reach = (K - 1) * s.frequency_unit / std::max(s.width, s.height);
+  const double step = reach > 4 ? 2 : reach > 2 ? 1 : 0.5;
+  for (double f = -std::floor(reach / step) * step; f <= reach + 1e-9; f += step) {
+    const double dx = f * s.width / s.frequency_unit * at.zoom, dy = f * s.height / s.frequency_unit * at.zoom;
+    char label[16];
+    std::snprintf(label, sizeof label, "%g", std::abs(f) < 1e-12 ? 0.0 : f);
+    r.line(center_x + dx, at.top + extent, center_x + dx, at.top + extent + 4, kBlack);
+    r.text(center_x + dx, at.top + extent + 16, label, 11, kBlack, Raster::Align::center);
+    r.line(at.left - 4, center_y - dy, at.left, center_y - dy, kBlack);
+    r.text(at.left - 7, center_y - dy + 4, label, 11, kBlack, Raster::Align::right);
+  }
+  r.text(at.left + extent / 2.0, at.top - 14, "Power spectrum P(k), gray scale of log10 P", 15, kBlack,
+         Raster::Align::center);
+  r.text(at.left + extent / 2.0, at.top + extent + 38, "kx (normalised frequency)", 13, kBlack, Raster::Align::center);
+  r.text(24, at.top + extent / 2.0, "ky (normalised frequency)", 13, kBlack, Raster::Align::center, true);
+  // The scale: a gray ramp from black (log10 P = kLogLo) at the bottom to white at the top.
+  for (int y = 0; y < extent; ++y) {
+    const auto g = static_cast<std::uint8_t>(std::lround(255.0 * (extent - 1 - y) / std::max(1, extent - 1)));
+    r.fill_rect(bar, at.top + y, bar + 18, at.top + y, {g, g, g});
+  }
+  r.polyline({{bar - 0.5, at.top - 0.5}, {bar + 18.5, at.top - 0.5}, {bar + 18.5, at.top + extent + 0.5},
+              {bar - 0.5, at.top + extent + 0.5}, {bar - 0.5, at.top - 0.5}},
+             kBlack, 1);
+  for (double v = kLogLo; v <= kLogHi + 1e-9; v += 1) {
+    const double y = at.top + (kLogHi - v) / (kLogHi - kLogLo) * extent;
+    char label[16];
+    std::snprintf(label, sizeof label, "%g", v);
+    r.line(bar + 18, y, bar + 22, y, kBlack);
+    r.text(bar + 25, y + 4, label, 11, kBlack);
+  }
+  r.text(bar + 75, at.top + extent / 2.0, "log10 P", 13, kBlack, Raster::Align::center, true);
   return r;
 }
 
 /// The y range covers [y_lo, y_hi] and the data, but stops at y_cap, so that a lattice's
 /// spikes do not flatten the rest (lines past the cap leave through the frame).
-Raster line_plot(const std::vector<std::array<double, 2>>& points, double reference, double y_lo,
-                 double y_hi, double y_cap) {
+Raster line_plot(const std::vector<std::array<double, 2>>& points, double reference, const std::string& reference_name,
+                 double y_lo, double y_hi, double y_cap, PlotText text) {
   double x_hi = 0;
   for (const auto& p : points) {
     x_hi = std::max(x_hi, p[0]);
     y_lo = std::max(std::min(y_lo, p[1]), -y_cap);
     y_hi = std::min(std::max(y_hi, p[1]), y_cap);
   }
-  Plot plot(kWidth, kHeight, 0, x_hi, y_lo, y_hi);
-  plot.reference(reference);
-  plot.polyline(points, kBlue);
+  Plot plot(kWidth, kHeight, 0, x_hi, y_lo, y_hi, std::move(text));
+  plot.reference(reference, kGray, reference_name);
+  plot.polyline(points, kBlue, "this packing");
   plot.axes();
-  return plot.raster();
+  return std::move(plot.raster());
 }
 
 /// The histogram's bars over the span of its non-empty bins (overflow not drawn).
-Raster histogram_plot(const Histogram& h) {
-  if (h.counts.empty()) return Plot(kWidth, kHeight, 0, 1, 0, 1).raster();
+Raster histogram_plot(const Histogram& h, PlotText text) {
+  if (h.counts.empty()) {
+    Plot empty(kWidth, kHeight, 0, 1, 0, 1, std::move(text));
+    empty.axes();
+    return std::move(empty.raster());
+  }
   std::size_t first = h.counts.size(), last = 0, top = 1;
   for (std::size_t k = 0; k < h.counts.size(); ++k) {
     if (h.counts[k] == 0) continue;
@@ -72,13 +119,13 @@ Raster histogram_plot(const Histogram& h) {
   first = first > pad ? first - pad : 0;
   last = std::min(last + pad, h.counts.size() - 1);
   Plot plot(kWidth, kHeight, h.lo + first * h.bin_width, h.lo + (last + 1) * h.bin_width, 0,
-            1.05 * static_cast<double>(top));
+            1.05 * static_cast<double>(top), std::move(text));
   for (std::size_t k = first; k <= last; ++k) {
     const double x = h.lo + k * h.bin_width;
     plot.bar(x, x + h.bin_width, static_cast<double>(h.counts[k]), kBlue);
   }
   plot.axes();
-  return plot.raster();
+  return std::move(plot.raster());
 }
 
 // The cell with its fibers: a pixel is blue when its center lies in a fiber (or one of
@@ -113,7 +160,7 @@ Raster cell_image(const PeriodicBox& cell, const std::vector<Vec2>& centers, con
 
 // Curves over r / D: the arrangement's in blue, the sample's in orange.
 Raster curves_plot(const FiberStatistics& stats, const FiberStatistics* sample, double reference,
-                   double (*value)(const FiberStatistics&, std::size_t)) {
+                   double (*value)(const FiberStatistics&, std::size_t), PlotText text) {
   const auto curve = [&](const FiberStatistics& s) {
     std::vector<std::array<double, 2>> points;
     for (std::size_t i = 0; i < s.r.size(); ++i) points.push_back({s.r[i], value(s, i)});
@@ -127,12 +174,12 @@ Raster curves_plot(const FiberStatistics& stats, const FiberStatistics* sample, 
     rsa = curve(*sample);
     for (const auto& p : rsa) y_lo = std::min(y_lo, p[1]), y_hi = std::max(y_hi, p[1]);
   }
-  Plot plot(kWidth, kHeight, 0, x_hi > 0 ? x_hi : 1, y_lo, y_hi > y_lo ? y_hi : y_lo + 1);
-  plot.reference(reference);
-  if (sample) plot.polyline(rsa, kOrange);
-  plot.polyline(fibers, kBlue);
+  Plot plot(kWidth, kHeight, 0, x_hi > 0 ? x_hi : 1, y_lo, y_hi > y_lo ? y_hi : y_lo + 1, std::move(text));
+  plot.reference(reference, kGray, "complete spatial randomness");
+  if (sample) plot.polyline(rsa, kOrange, "maximal sample it was tuned from");
+  plot.polyline(fibers, kBlue, "this arrangement");
   plot.axes();
-  return plot.raster();
+  return std::move(plot.raster());
 }
 
 }  // namespace
@@ -150,12 +197,15 @@ void write_fiber_pictures(const std::string& dir, const PeriodicBox& cell, const
   pictures.emplace_back("pair_correlation.png",
                         curves_plot(stats, sample, 1, [](const FiberStatistics& s, std::size_t i) {
                           return s.pair_correlation[i];
-                        }));
+                        }, {"Pair correlation g(r)", "r / D (D: mean fiber diameter)", "g(r)"}));
   pictures.emplace_back("ripley_l.png", curves_plot(stats, sample, 0, [](const FiberStatistics& s, std::size_t i) {
                           return s.ripley_l[i] - s.r[i];
-                        }));
-  pictures.emplace_back("nearest.png", histogram_plot(stats.nearest_histogram[0]));
-  pictures.emplace_back("psi6_local.png", histogram_plot(stats.psi6_local));
+                        }, {"Ripley's L(r) - r", "r / D", "(L(r) - r) / D"}));
+  pictures.emplace_back("nearest.png", histogram_plot(stats.nearest_histogram[0],
+                                                      {"Nearest neighbour distance", "center distance / D", "fibers"}));
+  pictures.emplace_back("psi6_local.png", histogram_plot(stats.psi6_local, {"Local bond order |psi6| (1: hexagonal)",
+                                                                            "|psi6| of a fiber's 6 nearest bonds",
+                                                                            "fibers"}));
   for (const auto& [name, raster] : pictures) detail::write_png(dir + "/" + name, raster);
 }
 
@@ -171,12 +221,19 @@ void write_report_pictures(const std::string& dir, const QualityReport& report,
                            const Spectrum* spectrum) {
   check_picture_folder(dir);
   std::vector<std::pair<std::string, Raster>> pictures;
-  pictures.emplace_back("angles.png", histogram_plot(report.angles.histogram));
-  pictures.emplace_back("edges.png", histogram_plot(report.edges.histogram));
+  pictures.emplace_back("angles.png", histogram_plot(report.angles.histogram,
+                                                     {"Angles of the Delaunay triangles", "angle (degrees)", "angles"}));
+  pictures.emplace_back("edges.png", histogram_plot(report.edges.histogram,
+                                                    {"Edge lengths of the Delaunay triangles", "length / r", "edges"}));
   if (spectrum) {
     pictures.emplace_back("spectrum.png", spectrum_image(*spectrum));
-    pictures.emplace_back("radial_mean.png", line_plot(spectrum->radial_mean, 1, 0, 2, 4));
-    pictures.emplace_back("anisotropy.png", line_plot(spectrum->anisotropy_db, 0, -10, 10, 30));
+    pictures.emplace_back("radial_mean.png",
+                          line_plot(spectrum->radial_mean, 1, "white noise (P = 1)", 0, 2, 4,
+                                    {"Radial mean of the power spectrum", "normalised frequency", "mean power P"}));
+    pictures.emplace_back("anisotropy.png",
+                          line_plot(spectrum->anisotropy_db, 0, "0 dB", -10, 10, 30,
+                                    {"Anisotropy of the power spectrum", "normalised frequency",
+                                     "10 log10(variance / mean^2) (dB)"}));
   }
   for (const auto& [name, raster] : pictures) detail::write_png(dir + "/" + name, raster);
 }

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <cstdio>
+#include <vector>
 
 #include "disktune/io.h"
 #include "svg_canvas.h"
@@ -7,7 +8,12 @@
 namespace disktune {
 
 void write_packing_svg(const std::string& path, const Packing& packing, const SvgStyle& style) {
-  const detail::SvgCanvas canvas(packing.frame(), style.pixels);
+  bool fixed = false, frozen = false;
+  for (const DiskId id : packing.ids()) fixed |= (packing.flags(id) & kFixed) != 0, frozen |= (packing.flags(id) & kFrozen) != 0;
+  std::vector<detail::SvgLegend> legend{{"#4c4c4c", "a disk, drawn at half its radius: no two overlap, so no two centers are closer than r"}};
+  if (fixed) legend.push_back({"#d62728", "a disk held on the boundary"});
+  if (frozen) legend.push_back({"#1f77b4", "a frozen disk (a crystal's)"});
+  const detail::SvgCanvas canvas(packing.frame(), style.pixels, legend);
   write_file_atomically(path, [&](std::ostream& out) {
     canvas.begin(out);
     out << "<g stroke=\"none\">\n";
