@@ -92,6 +92,11 @@ expect suggest-options 2 "^disktune: sample: unknown option --radus \(did you me
 expect suggest-command 2 "^disktune: unknown command sampel \(did you mean sample\?\)$" -- "$bin" sampel --radius 0.1
 expect no-suggestion 2 "^disktune: tune: unknown option --frobnicate$" -- "$bin" tune --radius 0.1 --frobnicate
 expect stray-argument 2 "^disktune: sample: unexpected argument stray$" -- "$bin" sample --radius 0.1 stray
+# --quiet (before or after the command): no summary, note or progress; warnings and errors still
+[ -z "$("$bin" sample --radius 0.05 -o quiet.csv --quiet 2>&1)" ] && [ -z "$("$bin" -q tune -i quiet.csv --target-count 300 2>&1)" ] &&
+  [ "$("$bin" tune --radius 0.05 --target-count 100 -q 2>&1 | wc -l)" -eq 1 ] &&
+  pass=$((pass + 1)) || { echo "FAIL --quiet"; fails=$((fails + 1)); }
+expect quiet-error 3 "^disktune: error: cannot read .missing.csv." -- "$bin" report missing.csv --radius 0.05 -q
 # Without --output nothing is written, and the command says so
 expect no-output-note 0 "note: no --output given: the [0-9]+ disks were not written" -- "$bin" sample --radius 0.1
 expect no-output-note-tune 0 "note: no --output given: the 320 disks were not written" -- "$bin" tune --radius 0.05 --target-count 320

@@ -85,7 +85,7 @@ CommandDomain open_surface(const DomainArgs& args) {
     // disks of its own, next to another, becomes the largest radius of auto:.
     if (!curves_fit(*d.surface, args.radius)) {
       d.surface_sizing = std::make_shared<const SurfaceSizing>(thickness_sizing(*d.surface, args.radius));
-      std::fprintf(stderr,
+      say(
                    "disktune: note: r = %g does not fit this surface (two of its feature curves or boundaries "
                    "are closer than r along more than 3r); using --sizing auto:%g, which shrinks r near them "
                    "(docs/surfaces.md)\n",
@@ -184,7 +184,7 @@ CommandDomain open_domain(const DomainArgs& args) {
   } else {
     if (args.sizing.empty()) {
       d.sizing = std::make_shared<const Sizing>(feature_sizing(d.planar, args.radius));
-      std::fprintf(stderr,
+      say(
                    "disktune: note: r = %g does not fit this domain (two of its corners are closer than r); "
                    "using --sizing auto:%g, which shrinks r near small features (docs/sizing.md)\n",
                    args.radius, args.radius);

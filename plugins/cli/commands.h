@@ -63,6 +63,12 @@ CLI::Option* reads_file(CLI::Option* option);
 /// `message` with the path standard input was kept at named "standard input".
 std::string naming_stdin(std::string message);
 
+/// --quiet: no summary lines, notes or progress on standard error (warnings and errors
+/// still). say() prints like fprintf(stderr, ...) unless quiet.
+void set_quiet(bool on);
+bool quiet();
+int say(const char* format, ...) __attribute__((format(printf, 1, 2)));
+
 /// Keeps the command line for the JSON files (main calls it before parsing).
 void remember_invocation(int argc, char** argv);
 /// Writes a JSON object (text that opens with '{') to `path` atomically, with a first

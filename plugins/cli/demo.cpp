@@ -9,7 +9,7 @@ namespace disktune::cli {
 
 int run_demo() {
   std::filesystem::create_directories("disktune-demo");
-  std::fprintf(stderr, "disktune demo: an MPS of the unit periodic square at r = 0.01, tuned to eta = 0.80 "
+  say("disktune demo: an MPS of the unit periodic square at r = 0.01, tuned to eta = 0.80 "
               "(see disktune --help)\n");
   SampleJob sample;
   sample.domain.radius = 0.01;

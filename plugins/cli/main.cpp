@@ -106,6 +106,9 @@ int main(int argc, char** argv) {
       "ejection.\nWith no arguments, runs the built-in demo (writes disktune-demo/)."};
   app.require_subcommand(0, 1);
   app.set_version_flag("--version", std::string("disktune ") + DISKTUNE_VERSION);
+  bool quiet = false;
+  app.add_flag("--quiet,-q", quiet, "No summary lines, notes or progress on standard error (warnings and errors still)");
+  app.fallthrough();  // --quiet after the command too
   Action action = run_demo;
   add_sample_command(app, action);
   add_tune_command(app, action);
@@ -136,6 +139,7 @@ int main(int argc, char** argv) {
     return kExitUsage;
   }
 
+  set_quiet(quiet);
   std::signal(SIGINT, on_interrupt);
   std::signal(SIGTERM, on_interrupt);
   // The demo is a pipeline of commands, each its own transaction (demo.cpp).

@@ -38,7 +38,7 @@ int run_mesh(const MeshArgs& given) {
     const PlanarMesh mesh = constrained_delaunay(packing, boundary_loops(packing, *domain.planar));
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     write_mesh(args.output, mesh);
-    std::fprintf(stderr, "mesh: %zu disks, %zu triangles (constrained Delaunay, holes removed), %.3f s -> %s\n",
+    say("mesh: %zu disks, %zu triangles (constrained Delaunay, holes removed), %.3f s -> %s\n",
                 mesh.vertices.size(), mesh.triangles.size(), seconds, args.output.c_str());
     return kExitOk;
   }
@@ -46,7 +46,7 @@ int run_mesh(const MeshArgs& given) {
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   write_mesh(args.output, mesh);
-  std::fprintf(stderr, 
+  say(
       "mesh: %zu disks, %zu triangles, %zu vertices (%zu copies across the seam), "
       "%.3f s -> %s\n",
       mesh.disk_count, mesh.triangles.size(), mesh.vertices.size(),

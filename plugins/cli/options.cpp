@@ -9,6 +9,8 @@
 
 #include <cctype>
 #include <cerrno>
+#include <cstdarg>
+#include <cstdio>
 #include <cmath>
 #include <cstdint>
 #include <string>
@@ -37,6 +39,22 @@ CLI::Option* add_seed_option(CLI::App* cmd, std::uint64_t& seed) {
   return cmd->add_option("--seed", seed, "Random seed (0 to 2^64-1); the same seed gives the same output")
       ->check(whole_number(0, UINT64_MAX, "--seed"))
       ->capture_default_str();
+}
+
+namespace {
+bool quiet_flag = false;
+}  // namespace
+
+void set_quiet(bool on) { quiet_flag = on; }
+bool quiet() { return quiet_flag; }
+
+int say(const char* format, ...) {
+  if (quiet_flag) return 0;
+  std::va_list args;
+  va_start(args, format);
+  const int n = std::vfprintf(stderr, format, args);
+  va_end(args);
+  return n;
 }
 
 CLI::Option* writes_file(CLI::Option* option) {

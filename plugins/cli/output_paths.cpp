@@ -22,7 +22,7 @@ void check_output_folder(const std::string& path) {
 
 void note_not_written(const std::string& output, std::size_t count) {
   if (!output.empty()) return;
-  std::fprintf(stderr,
+  say(
                "disktune: note: no --output given: the %zu disks were not written (add -o "
                "FILE.csv, or -o - for "
                "standard output)\n",

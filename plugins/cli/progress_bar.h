@@ -12,6 +12,8 @@
 #include <cstdlib>
 #include <string>
 
+#include "commands.h"
+
 namespace disktune::cli {
 
 class ProgressBar {
@@ -28,6 +30,7 @@ class ProgressBar {
   /// Shows `done` of `total`, with a short status after it.
   void update(double done, double total, const std::string& status) {
     using namespace std::chrono;
+    if (quiet()) return;
     const auto now = steady_clock::now();
     if (now - last_ < (terminal_ ? duration<double>(0.1) : log_every_)) return;
     last_ = now;

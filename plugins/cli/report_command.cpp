@@ -53,7 +53,7 @@ int run_planar_report(const ReportArgs& args, const CommandDomain& domain) {
   const PlanarQualityReport q = measure_planar_quality(packing, mesh, domain.area());
   if (!args.json.empty()) write_json(args.json, quality_json(q));
   if (!args.svg.empty()) write_mesh_svg(args.svg, mesh, packing);
-  std::fprintf(stderr, 
+  say(
       "report: %zu disks (%zu on the boundary), eta = %.4f, rho = %.4f, %s, %s, distance >= "
       "%.4f r; angles %.2f..%.2f deg (mean |a-60| %.2f, %.1f %% in [50,70]; interior "
       "triangles %s, boundary triangles %s), beta <= %.4f%s%s\n",
@@ -91,7 +91,7 @@ int run_report(const ReportArgs& given) {
     options.threads = args.threads;
     spectrum = measure_spectrum(packing, options);
     const std::chrono::duration<double> took = std::chrono::steady_clock::now() - start;
-    std::fprintf(stderr, 
+    say(
         "spectrum: window |k| < %d (rings to frequency %.2f), peak power %.2f at %.3f, "
         "effective Nyquist %.3f, %.2f s\n",
         spectrum->window, spectrum->reach(), spectrum->peak_power, spectrum->peak_frequency,
@@ -103,7 +103,7 @@ int run_report(const ReportArgs& given) {
   if (!args.json.empty()) write_json(args.json, quality_json(q, s));
   if (!args.png_dir.empty()) write_report_pictures(args.png_dir, q, s);
   if (!args.svg.empty()) write_mesh_svg(args.svg, mesh, packing);
-  std::fprintf(stderr, 
+  say(
       "report: %zu disks, eta = %.4f, rho = %.4f, %s, %s, distance >= %.4f r, "
       "coverage <= %.4f r, angles %.2f..%.2f deg (mean |a-60| %.2f), beta <= %.4f%s%s\n",
       q.count, q.area_fraction, q.relative_radius, q.maximal ? "maximal" : "NOT maximal",

@@ -108,15 +108,15 @@ void write_mesh(const RveJob& job, const Rve& rve, std::size_t k) {
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::size_t in_fibers = 0;
   for (const std::uint32_t m : mesh.material) in_fibers += m > 0;
-  std::fprintf(stderr, "rve mesh: %zu nodes, %zu triangles (%zu in fibers), angles %.1f-%.1f deg, radius ratio max %.2f "
+  say("rve mesh: %zu nodes, %zu triangles (%zu in fibers), angles %.1f-%.1f deg, radius ratio max %.2f "
               "mean %.3f, %zu + %zu periodic node pairs, sides %.3g D clear of fiber tangents, %.3f s",
               mesh.nodes.size(), mesh.triangles.size(), in_fibers, mesh.angles.min, mesh.angles.max,
               mesh.radius_ratio.max, mesh.radius_ratio.mean, mesh.left.size() + 2, mesh.bottom.size() + 2,
               mesh.side_clearance / rve.diameter, seconds);
   for (const std::string* file : {&job.msh, &job.inp}) {
-    if (!file->empty()) std::fprintf(stderr, " -> %s", output_of(job, *file, k).c_str());
+    if (!file->empty()) say(" -> %s", output_of(job, *file, k).c_str());
   }
-  std::fprintf(stderr, "\n");
+  say("\n");
   if (!job.msh.empty()) write_rve_msh(output_of(job, job.msh, k), mesh);
   if (!job.inp.empty()) write_rve_inp(output_of(job, job.inp, k), mesh);
 }
@@ -157,27 +157,27 @@ int run_rve(const RveJob& given) {
       double spread = 0;
       for (const double d : rve.diameters) spread += (d - rve.diameter) * (d - rve.diameter);
       spread = std::sqrt(spread / static_cast<double>(rve.diameters.size())) / rve.diameter;
-      std::fprintf(stderr, "rve: %zu fibers, vf %.4f, diameters %g-%g (mean %g, cv %.3f), gap %g, cell %g x %g, "
+      say("rve: %zu fibers, vf %.4f, diameters %g-%g (mean %g, cv %.3f), gap %g, cell %g x %g, "
                   "from a sample of %zu equal ones, seed %llu",
                   rve.centers.size(), rve.fiber_fraction, *least, *most, rve.diameter, spread, rve.gap,
                   rve.cell.width(), rve.cell.height(), rve.sample_centers.size(),
                   static_cast<unsigned long long>(job.spec.seed + k));
     } else {
-      std::fprintf(stderr, "rve: %zu fibers (%s%zu), vf %.4f, diameter %g, gap %g, cell %g x %g, from a sample of %zu, "
+      say("rve: %zu fibers (%s%zu), vf %.4f, diameter %g, gap %g, cell %g x %g, from a sample of %zu, "
                   "phase %s, seed %llu",
                   rve.centers.size(), rve.tuning.reached ? "as asked: " : "NOT reached, asked ", count,
                   rve.fiber_fraction, rve.diameter, rve.gap, rve.cell.width(), rve.cell.height(),
                   rve.sample_centers.size(), to_string(rve.tuning.last_phase).c_str(),
                   static_cast<unsigned long long>(job.spec.seed + k));
     }
-    if (rves.size() == 1) std::fprintf(stderr, ", %.3f s", seconds);
-    std::fprintf(stderr, " -> %s\n", output_of(job, job.output, k).c_str());
+    if (rves.size() == 1) say(", %.3f s", seconds);
+    say(" -> %s\n", output_of(job, job.output, k).c_str());
     if (meshing) write_mesh(job, rve, k);
   }
-  if (rves.size() > 1) std::fprintf(stderr, "rve: %zu realizations, %.3f s\n", rves.size(), seconds);
+  if (rves.size() > 1) say("rve: %zu realizations, %.3f s\n", rves.size(), seconds);
   if (!job.stats.empty() || !job.png_dir.empty()) write_statistics(job, rves);
   if (!reached) {
-    std::fprintf(stderr,
+    say(
                  "disktune: the fiber count was not reached: no phase makes progress beyond the counts above; "
                  "those arrangements were written; ask for fewer fibers or a smaller gap\n");
     return kExitNotReached;

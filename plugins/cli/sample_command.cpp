@@ -25,7 +25,7 @@ int run_sample(const SampleJob& job) {
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (!job.output.empty()) write_points_csv(job.output, packing);
   if (!job.svg.empty()) write_packing_svg(job.svg, packing);
-  std::fprintf(stderr, "sample: %zu disks, %s, %.3f s (%s, %s)%s%s\n", packing.size(),
+  say("sample: %zu disks, %s, %.3f s (%s, %s)%s%s\n", packing.size(),
               domain.density_text(packing.size()).c_str(), seconds, domain.radius_text().c_str(),
               domain.describe().c_str(), job.output.empty() ? "" : " -> ", job.output.c_str());
   note_not_written(job.output, packing.size());

@@ -141,7 +141,7 @@ int run_surface_sample(const SampleJob& job) {
   const SurfacePacking packing = domain.sample_surface(rng);
   const double seconds = seconds_since(t0);
   if (!job.output.empty()) write_surface_csv(job.output, packing);
-  std::fprintf(stderr, "sample: %zu disks%s, %s, %.3f s (%s, %s)%s%s\n", packing.size(),
+  say("sample: %zu disks%s, %s, %.3f s (%s, %s)%s%s\n", packing.size(),
               boundary_text(packing).c_str(), domain.density_text(packing.size()).c_str(), seconds,
               domain.radius_text().c_str(), domain.describe().c_str(),
               job.output.empty() ? "" : " -> ", job.output.c_str());
@@ -190,11 +190,11 @@ int run_surface_mesh(const std::string& input, const DomainArgs& domain_args,
   const std::string along = domain.surface->features().curves.empty()
                                 ? ""
                                 : ", " + std::to_string(m.mesh.feature_edges.size()) + " edges along feature curves";
-  std::fprintf(stderr, 
+  say(
       "mesh: %zu disks, %zu vertices, %zu triangles (restricted Delaunay)%s, %s, %.3f s -> %s\n",
       packing.size(), m.mesh.vertices.size(), m.mesh.triangles.size(), along.c_str(),
       topology_text(m.check, *domain.surface).c_str(), seconds, output.c_str());
-  if (!m.check.problems.empty()) std::fprintf(stderr, "mesh: %s\n", m.check.problems.c_str());
+  if (!m.check.problems.empty()) say("mesh: %s\n", m.check.problems.c_str());
   warn_topology(m.check, *domain.surface, "written");
   return kExitOk;
 }
@@ -243,7 +243,7 @@ int report_without_mesh(const SurfaceReportJob& job, const CommandDomain& domain
         packing_json(domain, packing, eta, rho, maximal, conflict_free) + "  \"mesh_check\": null,\n  \"mesh\": null\n}\n";
     write_json(job.json, text);
   }
-  std::fprintf(stderr, "report: %zu disks%s, eta = %.4f, rho = %.4f, %s, %s; no mesh (a restricted Delaunay mesh needs at "
+  say("report: %zu disks%s, eta = %.4f, rho = %.4f, %s, %s; no mesh (a restricted Delaunay mesh needs at "
               "least %zu samples: use a smaller radius)%s%s\n",
               packing.size(), boundary_text(packing).c_str(), eta, rho, maximal ? "maximal" : "NOT maximal",
               conflict_free ? "conflict-free" : "CONFLICTS", kFewestToMesh, job.json.empty() ? "" : " -> ",
@@ -290,7 +290,7 @@ int run_surface_report(const SurfaceReportJob& job) {
     const std::string text = j.str();
     write_json(job.json, text);
   }
-  std::fprintf(stderr, 
+  say(
       "report: %zu disks%s, eta = %.4f, rho = %.4f, %s, %s; mesh: %zu vertices, %zu triangles, "
       "%s, angles %.2f..%.2f deg (mean |a-60| %.2f), beta <= %.4f, Hausdorff %.4g%s%s\n",
       packing.size(), boundary_text(packing).c_str(), eta, rho, maximal ? "maximal" : "NOT maximal",
@@ -298,7 +298,7 @@ int run_surface_report(const SurfaceReportJob& job) {
       m.mesh.triangles.size(), topology_text(m.check, surface).c_str(), q.angles.min, q.angles.max,
       q.angles.mean_abs_dev_60, q.local_beta.max, q.hausdorff, job.json.empty() ? "" : " -> ",
       job.json.c_str());
-  if (!m.check.problems.empty()) std::fprintf(stderr, "report: %s\n", m.check.problems.c_str());
+  if (!m.check.problems.empty()) say("report: %s\n", m.check.problems.c_str());
   warn_topology(m.check, surface, "measured");
   return kExitOk;
 }
@@ -333,7 +333,7 @@ int run_surface_remesh(const RemeshJob& job) {
                      },
                      "", [] {});
   const double seconds = seconds_since(t0);
-  if (!result.grading_note.empty()) std::fprintf(stderr, "disktune: note: %s\n", result.grading_note.c_str());
+  if (!result.grading_note.empty()) say("disktune: note: %s\n", result.grading_note.c_str());
   write_surface_mesh(job.output, result.mesh);
   SurfaceMeshQuality q;
   if (!result.mesh.triangles.empty()) {
@@ -355,17 +355,17 @@ int run_surface_remesh(const RemeshJob& job) {
     const std::string text = j.str();
     write_json(job.json, text);
   }
-  std::fprintf(stderr, 
+  say(
       "remesh: %zu vertices (%s), %zu triangles, %zu edges along feature curves, %s, angles %.2f..%.2f deg, "
       "%.1f %% in [50,70], %.2f %% obtuse triangles, Hausdorff %.4g, r = %.6g, %.3f s -> %s%s%s\n",
       result.mesh.vertices.size(), result.tuning.reached ? "as asked" : "NOT as asked",
       result.mesh.triangles.size(), result.mesh.feature_edges.size(), topology_text(result.check, *surface).c_str(),
       q.angles.min, q.angles.max, 100 * q.angles.fraction_50_70, 100 * q.angles.fraction_obtuse_triangles,
       q.hausdorff, result.radius, seconds, job.output.c_str(), job.json.empty() ? "" : ", ", job.json.c_str());
-  if (!result.check.problems.empty()) std::fprintf(stderr, "remesh: %s\n", result.check.problems.c_str());
+  if (!result.check.problems.empty()) say("remesh: %s\n", result.check.problems.c_str());
   warn_topology(result.check, *surface, "written", "ask for more vertices");
   if (!result.tuning.reached) {
-    std::fprintf(stderr,
+    say(
                  "disktune: remesh reached %zu vertices, not %zu: tuning found no way to the exact count; the "
                  "mesh of the closest packing was written\n",
                  result.tuning.count, job.vertices);

@@ -128,7 +128,7 @@ int run_sweep(const SweepArgs& args) {
     const CvtReference cvt = cvt_reference_mesh({1, 1}, row.count, args.cvt_iterations);
     row.cvt = measure_planar_mesh(cvt.mesh, r);
     row.cvt_seconds = cvt.refine_seconds + cvt.lloyd_seconds;
-    std::fprintf(stderr, "sweep: %s: %zu disks in %.2f s; CVT %zu vertices in %.2f s\n",
+    say("sweep: %s: %zu disks in %.2f s; CVT %zu vertices in %.2f s\n",
                  row.label.c_str(), row.count, row.seconds, row.cvt.vertex_count, row.cvt_seconds);
     rows.push_back(std::move(row));
   }

@@ -109,7 +109,7 @@ TuneResult tune_with_progress(std::size_t start, std::size_t target, Method meth
 
 int report_tune(std::size_t start, const TuneResult& res, const std::string& density,
                 double seconds, const std::string& where, const std::string& output) {
-  std::fprintf(stderr, "tune: %zu -> %zu disks (target %zu%s), %s, phase %s, %.3f s%s%s%s\n", start,
+  say("tune: %zu -> %zu disks (target %zu%s), %s, phase %s, %.3f s%s%s%s\n", start,
               res.count, res.target, res.reached ? ", reached" : ", NOT reached", density.c_str(),
               to_string(res.last_phase).c_str(), seconds, where.c_str(),
               output.empty() ? "" : " -> ", output.c_str());
