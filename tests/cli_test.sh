@@ -196,6 +196,23 @@ if ext == 'vtu':
 " "$ext" && pass=$((pass + 1)) || { echo "FAIL mesh .$ext read by meshio"; fails=$((fails + 1)); }
   fi
 done
+# --format where the extension does not say: standard output, binary PLY
+"$bin" mesh q.csv -o - --format off 2>/dev/null | cmp -s - q.off && pass=$((pass + 1)) || { echo "FAIL mesh -o - --format off"; fails=$((fails + 1)); }
+expect mesh-ply-binary 0 "-> qb.ply" -- "$bin" mesh q.csv --output qb.ply --format ply-binary
+sed -n 2p qb.ply | grep -qx "format binary_little_endian 1.0" && pass=$((pass + 1)) || { echo "FAIL binary PLY header"; fails=$((fails + 1)); }
+if /usr/bin/python3 -c "import meshio" 2>/dev/null; then
+  /usr/bin/python3 -c "
+import meshio, numpy
+off = open('q.off').read().split()
+nv, nt = int(off[1]), int(off[2])
+points = numpy.array(off[4:4 + 3 * nv], float).reshape(nv, 3)
+faces = numpy.array(off[4 + 3 * nv:], int).reshape(nt, 4)[:, 1:]
+m = meshio.read('qb.ply')
+assert numpy.array_equal(m.points, points) and numpy.array_equal(m.cells_dict['triangle'], faces)
+" && pass=$((pass + 1)) || { echo "FAIL binary PLY read by meshio"; fails=$((fails + 1)); }
+fi
+expect mesh-format-unknown 2 "mesh format 'gif': give off, obj, ply, ply-binary" -- "$bin" mesh q.csv -o - --format gif
+expect mesh-stdout-no-format 2 "with --format NAME" -- "$bin" mesh q.csv -o -
 expect mesh-ply 0 "-> q.ply" -- "$bin" mesh q.csv --radius 0.05 --output q.ply
 sed -n 4p q.ply | grep -qE "^element vertex [0-9]+$" && pass=$((pass + 1)) || { echo "FAIL mesh PLY header"; fails=$((fails + 1)); }
 expect mesh-bad-extension 2 "supported: \.off, \.obj, \.ply, \.vtk" -- "$bin" mesh q.csv --radius 0.05 --output q.xyz

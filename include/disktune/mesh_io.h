@@ -10,15 +10,20 @@
 
 #include "disktune/mesh.h"
 #include "disktune/packing.h"
+#include "disktune/surface_mesh.h"
 
 namespace disktune {
 
-enum class MeshFormat { Off, Obj, Ply, Vtk, Vtu, Msh, Stl };
+enum class MeshFormat { Off, Obj, Ply, PlyBinary, Vtk, Vtu, Msh, Stl };
 
 /// The format named by the extension of `path` (.off, .obj, .ply, .vtk, .vtu, .msh, .stl;
 /// any letter case).
 /// Throws InvalidInput, listing the supported extensions, for any other.
 MeshFormat mesh_format_for_path(const std::string& path);
+/// The format called `name`: off, obj, ply, ply-binary (little-endian), vtk, vtu, msh or
+/// stl, for an output whose extension does not say (standard output). Throws
+/// InvalidInput, listing the names, for any other.
+MeshFormat mesh_format_named(const std::string& name);
 
 /// Writes the mesh's vertices (z = 0) and triangles in the format of `path`'s
 /// extension. The VTK files also carry each vertex's disk id (point data `disk_id`),
@@ -26,8 +31,12 @@ MeshFormat mesh_format_for_path(const std::string& path);
 /// files carry a surface mesh's feature edges as lines; STL (binary, 32-bit floats)
 /// has no shared vertices, so it keeps only the triangles' shape.
 void write_mesh(const std::string& path, const TriangleMesh& mesh);
+void write_mesh(const std::string& path, const TriangleMesh& mesh, MeshFormat format);
 /// The same for a planar mesh; its VTK `disk_id` is kNoDisk for a vertex that is no disk.
 void write_mesh(const std::string& path, const PlanarMesh& mesh);
+void write_mesh(const std::string& path, const PlanarMesh& mesh, MeshFormat format);
+/// write_surface_mesh (surface_mesh.h) in the format given, whatever the extension.
+void write_surface_mesh(const std::string& path, const SurfaceMesh& mesh, MeshFormat format);
 
 struct MeshSvgStyle {
   double pixels = 800;  ///< width of the picture in pixels

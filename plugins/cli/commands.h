@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "disktune/mesh_io.h"
 #include "disktune/tuning.h"
 
 namespace disktune::cli {
@@ -132,7 +133,8 @@ int report_tune(std::size_t start, const TuneResult& res, const std::string& den
 /// instead when its --domain names a surface (names_surface in command_domain.h).
 int run_surface_sample(const SampleJob& job);
 int run_surface_tune(const TuneJob& job);
-int run_surface_mesh(const std::string& input, const DomainArgs& domain, const std::string& output);
+int run_surface_mesh(const std::string& input, const DomainArgs& domain, const std::string& output,
+                     const std::string& format);
 struct SurfaceReportJob {
   std::string input;
   DomainArgs domain;
@@ -144,6 +146,7 @@ int run_surface_report(const SurfaceReportJob& job);
 /// out (remesh.h), its summary line, and optionally a JSON report.
 struct RemeshJob {
   std::string input, output, json;
+  std::string format;  // --format: empty for the output's extension
   std::size_t vertices = 0;
   std::string features = "60";
   std::uint64_t seed = 1;
@@ -158,6 +161,11 @@ int run_demo();
 /// Throws IoError when the folder of an output path does not exist, so that a typo
 /// costs no minutes of computing before the write fails.
 void check_output_folder(const std::string& path);
+/// The mesh format of an output: --format NAME when given, else the path's extension
+/// (refused, naming --format, when it says none); called before any work.
+MeshFormat output_mesh_format(const std::string& path, const std::string& format);
+/// --format on a command that writes a mesh.
+void add_format_option(CLI::App* cmd, std::string& format);
 /// After sample or tune without --output: a note on stderr that the `count` disks were
 /// not written, and how to write them.
 void note_not_written(const std::string& output, std::size_t count);

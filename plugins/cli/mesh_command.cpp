@@ -19,7 +19,7 @@ namespace {
 struct MeshArgs {
   std::string input;
   DomainArgs domain;
-  std::string output;
+  std::string output, format;
 };
 
 int run_mesh(const MeshArgs& given) {
@@ -28,8 +28,8 @@ int run_mesh(const MeshArgs& given) {
   std::vector<NamedFile> inputs = domain_files(args.domain);
   inputs.push_back({"the points file", args.input});
   check_files_apart(inputs, {{"--output", args.output}});
-  if (names_surface(args.domain)) return run_surface_mesh(args.input, args.domain, args.output);
-  mesh_format_for_path(args.output);  // a bad extension fails before any work
+  if (names_surface(args.domain)) return run_surface_mesh(args.input, args.domain, args.output, args.format);
+  const MeshFormat format = output_mesh_format(args.output, args.format);  // before any work
   check_output_folder(args.output);
   const CommandDomain domain = open_domain(args.domain);
   Packing packing = domain.read(args.input, false);
@@ -37,7 +37,7 @@ int run_mesh(const MeshArgs& given) {
   if (domain.planar) {
     const PlanarMesh mesh = constrained_delaunay(packing, boundary_loops(packing, *domain.planar));
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    write_mesh(args.output, mesh);
+    write_mesh(args.output, mesh, format);
     say("mesh: %zu disks, %zu triangles (constrained Delaunay, holes removed), %.3f s -> %s\n",
                 mesh.vertices.size(), mesh.triangles.size(), seconds, args.output.c_str());
     return kExitOk;
@@ -45,7 +45,7 @@ int run_mesh(const MeshArgs& given) {
   const TriangleMesh mesh = periodic_delaunay(packing);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  write_mesh(args.output, mesh);
+  write_mesh(args.output, mesh, format);
   say(
       "mesh: %zu disks, %zu triangles, %zu vertices (%zu copies across the seam), "
       "%.3f s -> %s\n",
@@ -73,6 +73,7 @@ void add_mesh_command(CLI::App& app, Action& action) {
                   "Mesh file to write: .off, .obj, .ply, .vtk (legacy VTK), .vtu (VTK XML), .msh (Gmsh "
                   "4.1), all ASCII, or .stl (binary), on every domain"))
       ->required();
+  add_format_option(cmd, args->format);
   cmd->callback([args, &action] { action = [args] { return run_mesh(*args); }; });
 }
 

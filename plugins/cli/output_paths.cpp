@@ -20,6 +20,21 @@ void check_output_folder(const std::string& path) {
   }
 }
 
+MeshFormat output_mesh_format(const std::string& path, const std::string& format) {
+  if (!format.empty()) return mesh_format_named(format);
+  try {
+    return mesh_format_for_path(path);
+  } catch (const InvalidInput& e) {
+    throw InvalidInput(std::string(e.what()) + " with --format NAME");
+  }
+}
+
+void add_format_option(CLI::App* cmd, std::string& format) {
+  cmd->add_option("--format", format,
+                  "Mesh format when the output's extension does not say it (standard output, -): off, obj, ply, "
+                  "ply-binary, vtk, vtu, msh or stl");
+}
+
 void note_not_written(const std::string& output, std::size_t count) {
   if (!output.empty()) return;
   say(

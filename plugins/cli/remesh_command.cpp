@@ -21,6 +21,7 @@ void add_remesh_command(CLI::App& app, Action& action) {
       ->check(whole_number(4, 1'000'000'000, "--vertices"))
       ->required();
   writes_file(cmd->add_option("--output,-o", job->output, "Mesh file to write: .off, .obj, .ply, .vtk, .vtu (VTK XML), .msh (Gmsh 4.1) or .stl (binary)"))->required();
+  add_format_option(cmd, job->format);
   cmd->add_option("--features", job->features,
                   "Sharp edges to keep: edges whose triangles' normals differ by more than this many "
                   "degrees (default 60), or 'none'")

@@ -177,16 +177,16 @@ int run_surface_tune(const TuneJob& job) {
                      job.output);
 }
 
-int run_surface_mesh(const std::string& input, const DomainArgs& domain_args,
-                     const std::string& output) {
-  check_surface_mesh_path(output);  // fail before any work
+int run_surface_mesh(const std::string& input, const DomainArgs& domain_args, const std::string& output,
+                     const std::string& format_name) {
+  const MeshFormat format = output_mesh_format(output, format_name);  // before any work
   check_output_folder(output);
   const CommandDomain domain = open_domain(domain_args);
   const SurfacePacking packing = domain.read_surface(input, false);
   const auto t0 = std::chrono::steady_clock::now();
   const SampleMesh m = sample_mesh(packing);
   const double seconds = seconds_since(t0);
-  write_surface_mesh(output, m.mesh);
+  write_surface_mesh(output, m.mesh, format);
   const std::string along = domain.surface->features().curves.empty()
                                 ? ""
                                 : ", " + std::to_string(m.mesh.feature_edges.size()) + " edges along feature curves";
@@ -305,7 +305,7 @@ int run_surface_report(const SurfaceReportJob& job) {
 
 int run_surface_remesh(const RemeshJob& job) {
   check_files_apart({{"the surface", job.input}}, {{"--output", job.output}, {"--json", job.json}});
-  check_surface_mesh_path(job.output);  // fail before any work
+  const MeshFormat format = output_mesh_format(job.output, job.format);  // before any work
   check_output_folder(job.output);
   if (!job.json.empty()) check_output_folder(job.json);
   DomainArgs args;
@@ -334,7 +334,7 @@ int run_surface_remesh(const RemeshJob& job) {
                      "", [] {});
   const double seconds = seconds_since(t0);
   if (!result.grading_note.empty()) say("disktune: note: %s\n", result.grading_note.c_str());
-  write_surface_mesh(job.output, result.mesh);
+  write_surface_mesh(job.output, result.mesh, format);
   SurfaceMeshQuality q;
   if (!result.mesh.triangles.empty()) {
     q = measure_surface_mesh(result.mesh, result.radii);

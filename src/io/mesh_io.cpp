@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -138,8 +139,26 @@ void put_stl(std::ostream& out, const MeshView& mesh) {
   }
 }
 
-void write_view(const std::string& path, const MeshView& mesh) {
-  const MeshFormat format = mesh_format_for_path(path);
+// Binary PLY, little-endian (as on every machine this builds for): double coordinates,
+// faces as a byte count and three 32-bit indices.
+void put_binary_ply(std::ostream& out, const MeshView& mesh) {
+  out << "ply\nformat binary_little_endian 1.0\ncomment " << mesh.title << "\nelement vertex " << mesh.vertices.size()
+      << "\nproperty double x\nproperty double y\nproperty double z\nelement face " << mesh.triangles.size()
+      << "\nproperty list uchar int vertex_indices\nend_header\n";
+  for (const Vec3& p : mesh.vertices) {
+    const double xyz[3] = {p.x, p.y, p.z};
+    out.write(reinterpret_cast<const char*>(xyz), sizeof xyz);
+  }
+  for (const auto& t : mesh.triangles) {
+    const std::int32_t corners[3] = {static_cast<std::int32_t>(t[0]), static_cast<std::int32_t>(t[1]),
+                                     static_cast<std::int32_t>(t[2])};
+    out.put(3);
+    out.write(reinterpret_cast<const char*>(corners), sizeof corners);
+  }
+}
+
+void write_view(const std::string& path, const MeshView& mesh, std::optional<MeshFormat> given = {}) {
+  const MeshFormat format = given ? *given : mesh_format_for_path(path);
   const std::size_t nv = mesh.vertices.size(), nt = mesh.triangles.size();
   write_file_atomically(path, [&](std::ostream& out) {
     switch (format) {
@@ -180,6 +199,7 @@ void write_view(const std::string& path, const MeshView& mesh) {
         for (const DiskId id : *mesh.vertex_disk) out << id << '\n';
         return;
       }
+      case MeshFormat::PlyBinary: return put_binary_ply(out, mesh);
       case MeshFormat::Vtu: return put_vtu(out, mesh);
       case MeshFormat::Msh: return put_msh(out, mesh);
       case MeshFormat::Stl: return put_stl(out, mesh);
@@ -200,23 +220,47 @@ MeshFormat mesh_format_for_path(const std::string& path) {
   if (ext == ".stl") return MeshFormat::Stl;
   throw InvalidInput("cannot tell the mesh format of '" + path +
                      "' from its extension; supported: .off, .obj, .ply, .vtk, .vtu, .msh, .stl (.vtk is legacy VTK, "
-                     ".vtu VTK XML, .msh Gmsh 4.1, .stl binary; the others ASCII)");
+                     ".vtu VTK XML, .msh Gmsh 4.1, .stl binary; the others ASCII), or name the format (binary PLY: "
+                     "ply-binary)");
 }
 
-void write_mesh(const std::string& path, const TriangleMesh& mesh) {
-  write_view(path, {in_plane(mesh.vertices), &mesh.vertex_disk, mesh.triangles,
-                    "disktune periodic Delaunay mesh: " + std::to_string(mesh.disk_count) + " disks"});
+MeshFormat mesh_format_named(const std::string& name) {
+  static const std::pair<const char*, MeshFormat> kNames[] = {
+      {"off", MeshFormat::Off}, {"obj", MeshFormat::Obj}, {"ply", MeshFormat::Ply}, {"ply-binary", MeshFormat::PlyBinary},
+      {"vtk", MeshFormat::Vtk}, {"vtu", MeshFormat::Vtu}, {"msh", MeshFormat::Msh},  {"stl", MeshFormat::Stl}};
+  for (const auto& [known, format] : kNames)
+    if (name == known) return format;
+  throw InvalidInput("mesh format '" + name + "': give off, obj, ply, ply-binary, vtk, vtu, msh or stl");
 }
 
-void write_mesh(const std::string& path, const PlanarMesh& mesh) {
-  write_view(path, {in_plane(mesh.vertices), &mesh.vertex_disk, mesh.triangles,
-                    "disktune planar mesh: " + std::to_string(mesh.vertices.size()) + " vertices"});
+namespace {
+
+MeshView view_of(const TriangleMesh& mesh) {
+  return {in_plane(mesh.vertices), &mesh.vertex_disk, mesh.triangles,
+          "disktune periodic Delaunay mesh: " + std::to_string(mesh.disk_count) + " disks"};
+}
+MeshView view_of(const PlanarMesh& mesh) {
+  return {in_plane(mesh.vertices), &mesh.vertex_disk, mesh.triangles,
+          "disktune planar mesh: " + std::to_string(mesh.vertices.size()) + " vertices"};
+}
+MeshView view_of(const SurfaceMesh& mesh) {
+  return {mesh.vertices, nullptr, mesh.triangles,
+          "disktune surface mesh: " + std::to_string(mesh.vertices.size()) + " vertices", &mesh.feature_edges};
 }
 
-void write_surface_mesh(const std::string& path, const SurfaceMesh& mesh) {
-  write_view(path, {mesh.vertices, nullptr, mesh.triangles,
-                    "disktune surface mesh: " + std::to_string(mesh.vertices.size()) + " vertices",
-                    &mesh.feature_edges});
+}  // namespace
+
+void write_mesh(const std::string& path, const TriangleMesh& mesh) { write_view(path, view_of(mesh)); }
+void write_mesh(const std::string& path, const TriangleMesh& mesh, MeshFormat format) {
+  write_view(path, view_of(mesh), format);
+}
+void write_mesh(const std::string& path, const PlanarMesh& mesh) { write_view(path, view_of(mesh)); }
+void write_mesh(const std::string& path, const PlanarMesh& mesh, MeshFormat format) {
+  write_view(path, view_of(mesh), format);
+}
+void write_surface_mesh(const std::string& path, const SurfaceMesh& mesh) { write_view(path, view_of(mesh)); }
+void write_surface_mesh(const std::string& path, const SurfaceMesh& mesh, MeshFormat format) {
+  write_view(path, view_of(mesh), format);
 }
 
 void check_surface_mesh_path(const std::string& path) { mesh_format_for_path(path); }
