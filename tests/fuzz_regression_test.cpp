@@ -8,6 +8,7 @@
 #include <fstream>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "disktune/errors.h"
@@ -52,6 +53,21 @@ TEST(FuzzRegression, PolyDomainFarLongerThanWide) {
   const Sizing sizing = feature_sizing(std::make_shared<const PlanarDomain>(domain), 7.7e119);
   EXPECT_NEAR(sizing({0, 0}), kFeatureShare * 1, 1e-12);
   EXPECT_GE(sizing({0.5, 0}), kFeatureShare * 1);  // farther than 1 from (0, 1) and x = 1
+}
+
+// "auto:.0000000000959038974" on the unit square: the feature sizing walked each side in
+// steps of 7 r_max / 0.45 (its search for other boundary parts reached no farther), about
+// 10^11 of them; the sanitized fuzzer timed out. The walk now steps as far as the other
+// parts allow. The radius is r_max everywhere (no part is within r_max / 0.45 of another).
+TEST(FuzzRegression, FeatureSizingWithATinyRadius) {
+  const auto square = std::make_shared<const PlanarDomain>(std::vector<Vec2>{{0, 0}, {1, 0}, {1, 1}, {0, 1}});
+  for (const auto& [text, r_max] : {std::pair{"auto:1e-9", 1e-9}, {"auto:9.59038974e-11", 9.59038974e-11}}) {
+    const Sizing sizing = parse_sizing(text, square);
+    EXPECT_NEAR(sizing({0.5, 0.5}), r_max, 1e-3 * r_max);
+    EXPECT_NEAR(sizing({0, 0}), r_max, 1e-3 * r_max);
+  }
+  const Sizing again = parse_sizing("auto:.0000000000959038974\r", square);
+  EXPECT_NEAR(again({0.3, 1}), 9.59038974e-11, 1e-20);
 }
 
 // Corners at x = -1e308 and 1e308: the width overflowed, so the segment grid's cell count

@@ -411,3 +411,29 @@ TEST(RepellerChoice, TheLargestWeightedDistanceWins) {
 
 }  // namespace
 }  // namespace disktune
+
+namespace disktune {
+namespace {
+
+// The names `tune --method` and the Python module take, and a clear refusal of others.
+TEST(MethodNames, EveryNameAndNoOther) {
+  EXPECT_EQ(method_named("auto"), Method::automatic);
+  EXPECT_EQ(method_named("void"), Method::void_injection);
+  EXPECT_EQ(method_named("repeller"), Method::repeller_injection);
+  EXPECT_EQ(method_named("crystal"), Method::crystal_injection);
+  EXPECT_EQ(method_named("angle"), Method::angle_injection);
+  EXPECT_EQ(method_named("sift"), Method::sift_ejection);
+  EXPECT_EQ(method_named("attractor"), Method::attractor_ejection);
+  EXPECT_EQ(method_named("crystal-eject"), Method::crystal_ejection);
+  for (const char* bad : {"", "Auto", "voids", "crystal_eject"}) {
+    try {
+      method_named(bad);
+      ADD_FAILURE() << bad << " was taken";
+    } catch (const InvalidInput& e) {
+      EXPECT_NE(std::string(e.what()).find("give auto, void, repeller"), std::string::npos) << e.what();
+    }
+  }
+}
+
+}  // namespace
+}  // namespace disktune

@@ -78,6 +78,10 @@ enum class Method {
   attractor_ejection,
   crystal_ejection
 };
+/// The method called `name`: auto, void, repeller, crystal, angle, sift, attractor or
+/// crystal-eject (the names `disktune tune --method` takes). Throws InvalidInput, listing
+/// them, for any other.
+Method method_named(const std::string& name);
 
 struct Progress {
   std::size_t count;

@@ -29,16 +29,6 @@ struct TuneArgs {
   int relax_sweeps = 0;
 };
 
-Method method_named(const std::string& name) {
-  if (name == "void") return Method::void_injection;
-  if (name == "repeller") return Method::repeller_injection;
-  if (name == "crystal") return Method::crystal_injection;
-  if (name == "angle") return Method::angle_injection;
-  if (name == "sift") return Method::sift_ejection;
-  if (name == "attractor") return Method::attractor_ejection;
-  if (name == "crystal-eject") return Method::crystal_ejection;
-  return Method::automatic;
-}
 
 }  // namespace
 

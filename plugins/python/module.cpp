@@ -208,20 +208,6 @@ auto without_gil(const py::object& progress, TuneOptions& options, Work&& work)
   }
 }
 
-Method method_named(const std::string& name) {
-  if (name == "auto") return Method::automatic;
-  if (name == "void") return Method::void_injection;
-  if (name == "repeller") return Method::repeller_injection;
-  if (name == "crystal") return Method::crystal_injection;
-  if (name == "angle") return Method::angle_injection;
-  if (name == "sift") return Method::sift_ejection;
-  if (name == "attractor") return Method::attractor_ejection;
-  if (name == "crystal-eject") return Method::crystal_ejection;
-  throw InvalidInput(
-      "method '" + name +
-      "': give auto, void, repeller, crystal, angle, sift, attractor or crystal-eject");
-}
-
 Target target_of(std::optional<std::size_t> count, std::optional<double> area_fraction,
                  std::optional<double> relative_radius) {
   const int given = count.has_value() + area_fraction.has_value() + relative_radius.has_value();

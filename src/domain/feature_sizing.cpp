@@ -148,9 +148,14 @@ std::vector<Site> feature_sites(const PlanarDomain& domain, double r_max) {
     }
   for (const BoundarySegment& s : segments) {
     const double len = distance(s.a, s.b);
+    // lfs is 1-Lipschitz, so from a point lfs - reach from every other part the walk
+    // may skip that far. The search reaches at least len / 64 (a segment far from all
+    // else takes a few steps, not len / (7 reach): r_max = 1e-9 on the unit square
+    // took 9.7 s, found by the fuzzer) and 8 reach (near features, short searches).
+    const double search = std::max(8 * reach, len / 64);
     for (double t = 0; t < len;) {
       const Vec2 p = s.a + (s.b - s.a) * (t / len);
-      const double lfs = grid.distance(p, 8 * reach, [&](std::size_t o) { return next_to(s, segments[o]); });
+      const double lfs = grid.distance(p, search, [&](std::size_t o) { return next_to(s, segments[o]); });
       if (lfs < reach) add(p, lfs);
       t += std::max({0.25 * kFeatureShare * std::min(lfs, reach), lfs - reach, 1e-9 * len});
     }

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <cmath>
 #include <sstream>
+#include <string>
+#include <utility>
 
 #include "disktune/errors.h"
 #include "disktune/tuning.h"
@@ -82,6 +84,17 @@ std::string to_string(Phase phase) {
     case Phase::relaxation: return "relaxation";
   }
   return "?";
+}
+
+Method method_named(const std::string& name) {
+  static const std::pair<const char*, Method> kNames[] = {
+      {"auto", Method::automatic},         {"void", Method::void_injection},
+      {"repeller", Method::repeller_injection}, {"crystal", Method::crystal_injection},
+      {"angle", Method::angle_injection},  {"sift", Method::sift_ejection},
+      {"attractor", Method::attractor_ejection}, {"crystal-eject", Method::crystal_ejection}};
+  for (const auto& [known, method] : kNames)
+    if (name == known) return method;
+  throw InvalidInput("method '" + name + "': give auto, void, repeller, crystal, angle, sift, attractor or crystal-eject");
 }
 
 }  // namespace disktune
