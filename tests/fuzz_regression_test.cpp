@@ -70,6 +70,21 @@ TEST(FuzzRegression, FeatureSizingWithATinyRadius) {
   EXPECT_NEAR(again({0.3, 1}), 9.59038974e-11, 1e-20);
 }
 
+// A triangle with a corner 1e-308 from the opposite side (the fuzzer, 2026-12-04): the
+// squared distance underflowed to 0, so the feature sizing gave radius 0 there. Such a
+// domain reads, and its feature sizing is refused, naming the place.
+TEST(FuzzRegression, FeatureCloserThanADoubleCanMeasure) {
+  TempDir dir;
+  const std::string path = written(dir, "tiny.poly", "3 2 0 0\n1 1e-308 0\n2 0e304 0\n3 0 1\n3 0\n1 1 2\n2 2 3\n3 3 1\n");
+  const auto domain = std::make_shared<const PlanarDomain>(read_poly(path));
+  try {
+    feature_sizing(domain, 0.01);
+    ADD_FAILURE() << "a feature 1e-308 wide was taken";
+  } catch (const InvalidInput& e) {
+    EXPECT_NE(std::string(e.what()).find("closer than the arithmetic can measure"), std::string::npos) << e.what();
+  }
+}
+
 // Corners at x = -1e308 and 1e308: the width overflowed, so the segment grid's cell count
 // was NaN (undefined as an int64). The file is refused.
 TEST(FuzzRegression, PolyDomainWiderThanADouble) {

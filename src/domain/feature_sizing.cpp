@@ -130,6 +130,13 @@ std::vector<Site> feature_sites(const PlanarDomain& domain, double r_max) {
   std::vector<Site> out;
   Site smallest{{}, std::numeric_limits<double>::infinity()};
   auto add = [&](Vec2 p, double lfs) {
+    if (!(kFeatureShare * lfs > 0)) {  // closer than a double's square can tell: a radius of 0
+      std::ostringstream msg;
+      msg << "feature sizing: near (" << p.x << ", " << p.y << ") two boundary parts are " << lfs
+          << " apart, closer than the arithmetic can measure (their squared distance is below the smallest "
+          << "double); move them apart or remove the vertex there";
+      throw InvalidInput(msg.str(), InvalidInput::Remedy::domain);
+    }
     if (kFeatureShare * lfs < smallest.r) smallest = {p, kFeatureShare * lfs};
     if (out.size() == kMaxSites) {
       std::ostringstream msg;
