@@ -8,6 +8,7 @@
 #include <pybind11/stl.h>
 
 #include <cmath>
+#include <numeric>
 #include <optional>
 #include <string>
 #include <vector>
@@ -244,6 +245,16 @@ py::dict mesh_check_dict(const SurfaceMeshCheck& c) {
       py::arg("isolated_vertices") = c.isolated_vertices, py::arg("problems") = c.problems);
 }
 
+// A surface mesh: vertex i is the i-th disk.
+PyMesh surface_mesh_of(const SurfaceMesh& m) {
+  PyMesh out;
+  out.points = rows_of(m.vertices), out.triangles = rows_of(m.triangles);
+  std::vector<std::int64_t> disks(m.vertices.size());
+  std::iota(disks.begin(), disks.end(), 0);
+  out.disks = array_of(disks);
+  return out;
+}
+
 PyMesh mesh_of(const PyPacking& packing) {
   PyMesh out;
   std::vector<std::int64_t> disks;
@@ -253,10 +264,9 @@ PyMesh mesh_of(const PyPacking& packing) {
       py::gil_scoped_release released;
       m = restricted_delaunay(*packing.surface);
     }
-    for (std::size_t i = 0; i < m.vertices.size(); ++i)
-      disks.push_back(static_cast<std::int64_t>(i));
-    out.points = rows_of(m.vertices), out.triangles = rows_of(m.triangles);
-  } else if (packing.planar) {
+    return surface_mesh_of(m);
+  }
+  if (packing.planar) {
     Packing copy = *packing.plane;  // boundary_loops marks the boundary disks
     const auto rows = packing.rows();
     PlanarMesh m;
@@ -393,12 +403,7 @@ PyMesh remesh_surface(const python::SurfaceHandle& surface, std::size_t vertices
     q = measure_surface_mesh(r.mesh, r.radii);
     q.hausdorff = hausdorff_distance(r.mesh, *surface.domain, 10000, 1);
   }
-  PyMesh out;
-  out.points = rows_of(r.mesh.vertices), out.triangles = rows_of(r.mesh.triangles);
-  std::vector<std::int64_t> disks;
-  for (std::size_t i = 0; i < r.mesh.vertices.size(); ++i)
-    disks.push_back(static_cast<std::int64_t>(i));
-  out.disks = array_of(disks);
+  PyMesh out = surface_mesh_of(r.mesh);
   py::dict report;
   report["vertices"] = r.mesh.vertices.size();
   report["reached"] = r.tuning.reached;
