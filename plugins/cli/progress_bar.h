@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Progress on stderr: on a terminal a one-line bar redrawn at most ten times a second;
 // elsewhere (a log, a pipe) a plain line every ten seconds (DISKTUNE_PROGRESS_SECONDS
-// sets another interval), none for a job shorter than that. Both show the time so far.
+// sets another interval, 0 a line at every update), none for a job shorter than that. Both
+// show the time so far.
 #pragma once
 
 #include <unistd.h>
@@ -21,9 +22,13 @@ class ProgressBar {
   /// `what` opens each logged line ("tune").
   explicit ProgressBar(std::string what)
       : what_(std::move(what)), terminal_(isatty(STDERR_FILENO) != 0) {
-    const char* every = std::getenv("DISKTUNE_PROGRESS_SECONDS");
-    const double seconds = every ? std::atof(every) : 0;
-    if (seconds > 0 && seconds < 1e6) log_every_ = std::chrono::duration<double>(seconds);
+    // A value that is not a number in [0, 10^6) leaves the ten seconds.
+    if (const char* every = std::getenv("DISKTUNE_PROGRESS_SECONDS")) {
+      char* end = nullptr;
+      const double seconds = std::strtod(every, &end);
+      if (end != every && *end == '\0' && seconds >= 0 && seconds < 1e6)
+        log_every_ = std::chrono::duration<double>(seconds);
+    }
   }
   ~ProgressBar() { clear(); }
 
