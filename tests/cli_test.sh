@@ -441,6 +441,12 @@ expect features-none 0 "^sample: [0-9]+ disks, eta .*genus 0, closed, area" -- "
 expect features-angle 0 "closed, [0-9]+ feature curves" -- "$bin" sample --domain "$fandisk" --radius 0.02 --features 30
 expect features-bad 2 "--features 200: give a dihedral angle in degrees strictly between 0 and 180" -- "$bin" sample --domain "$fandisk" --radius 0.02 --features 200
 expect features-word 2 "--features sharp: give a dihedral angle" -- "$bin" sample --domain "$fandisk" --radius 0.02 --features sharp
+# Stray folds: the elephant's 60-degree edges are short scratches with loose ends, dropped
+# by default; ANGLE:0 keeps every one (84 curves); a bad share is refused.
+elephant="$data/surfaces/elephant.off"
+expect features-stray-dropped 0 "^sample: [0-9]+ disks, eta .*genus 3, closed, area" -- "$bin" sample --domain "$elephant" --radius 0.05
+expect features-stray-kept 0 "closed, 84 feature curves" -- "$bin" sample --domain "$elephant" --radius 0.05 --features 60:0
+expect features-stray-bad 2 "--features 60:x: give a dihedral angle .*:STRAY" -- "$bin" sample --domain "$elephant" --radius 0.05 --features 60:x
 expect box-size-planar 2 "--width and --height size the periodic box; --domain .*square_with_hole\.poly has its own size" -- "$bin" sample --domain "$data/domains/square_with_hole.poly" --radius 0.05 --width 2
 expect features-flat 2 "--features applies to curved surfaces only" -- "$bin" sample --domain periodic --radius 0.05 --features 60
 expect surface-boundary 0 "[0-9]+ disks \([0-9]+ on the boundary\), .*1 boundary loop with 4 corners" -- "$bin" sample --domain "$data/surfaces/mesh_with_border.off" --radius 4 --output mb.csv

@@ -170,7 +170,7 @@ TEST(Relaxation, KeepsASurfacePackingValidItsFeaturesFixedAndItsMeshsTopology) {
       {"fandisk.off", "0.04", 0.15, 0.6}, {"fandisk.off", "auto:0.05", 0.1, 0.75}, {"elephant.off", "0.012", 0.25, 0.3}};
   for (const auto& [file, spec, gain, obtuse] : cases) {
     SurfaceDomain d = *test::surface_file(file);
-    d.set_features(detect_features(d, {60, 60}));
+    d.set_features(detect_features(d, {60, 60, 0}));
     const auto surface = std::make_shared<const SurfaceDomain>(std::move(d));
     const oracle::SurfaceMeshInput input = test::oracle_surface(*surface);
     const oracle::TopologyReport want = oracle::check_topology(
@@ -231,7 +231,7 @@ TEST(Relaxation, OpeningObtuseAnglesLeavesFewerObtuseTrianglesAndAValidPacking) 
   const std::pair<const char*, double> cases[] = {{"eight.off", 0.02}, {"elephant.off", 0.012}};
   for (const auto& [file, r] : cases) {
     SurfaceDomain d = *test::surface_file(file);
-    d.set_features(detect_features(d, {60, 60}));
+    d.set_features(detect_features(d, {60, 60, 0}));
     const auto surface = std::make_shared<const SurfaceDomain>(std::move(d));
     Rng rng(3);
     SurfacePacking p = sample_mps(surface, SurfaceSizing::constant(r), rng);
@@ -269,7 +269,7 @@ TEST(Relaxation, OpeningObtuseAnglesLeavesFewerObtuseTrianglesAndAValidPacking) 
 // disk: one of the other two moves toward the far side instead.
 TEST(Relaxation, ObtuseAnglesAtFixedDisksAreOpenedByTheirNeighbours) {
   SurfaceDomain d = *test::surface_file("fandisk.off");
-  d.set_features(detect_features(d, {60, 60}));
+  d.set_features(detect_features(d, {60, 60, 0}));
   const auto surface = std::make_shared<const SurfaceDomain>(std::move(d));
   for (const std::uint64_t seed : {1, 2}) {
     Rng rng(seed);

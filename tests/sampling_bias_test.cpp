@@ -87,7 +87,7 @@ TEST(SamplingBias, SurfacesWithSharpFeaturesToo) {
   for (const SurfaceCase& c : {SurfaceCase{"fandisk.off", 0.02}, SurfaceCase{"joint.off", 0.05},
                                SurfaceCase{"elephant.off", 0.02}}) {
     SurfaceDomain d = *test::surface_file(c.file);
-    d.set_features(detect_features(d));
+    d.set_features(detect_features(d, {60, 60, 0}));  // the elephant's stray folds too
     const auto domain = std::make_shared<const SurfaceDomain>(std::move(d));
     for (std::uint64_t seed = 1; seed <= 3; ++seed) {
       Rng rng(seed);

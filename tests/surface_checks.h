@@ -93,6 +93,42 @@ inline std::set<MeshEdge> expected_features(const SurfaceDomain& d, double degre
   return out;
 }
 
+/// `edges` less the stray folds (FeatureOptions::stray_length), by brute force: each
+/// edge's group found by a flood over edges that share a vertex, its length summed and
+/// its vertices on one edge of the set looked for on the open boundary.
+inline std::set<MeshEdge> expected_without_strays(const SurfaceDomain& d,
+                                                  const std::set<MeshEdge>& edges, double share) {
+  std::map<std::size_t, std::vector<MeshEdge>> at;
+  for (const MeshEdge& e : edges) at[e[0]].push_back(e), at[e[1]].push_back(e);
+  std::set<std::size_t> boundary;
+  for (const auto& [edge, tris] : edge_sides(d))
+    if (tris.size() == 1) boundary.insert(edge[0]), boundary.insert(edge[1]);
+  const Vec3 span = d.bbox_max() - d.bbox_min();
+  const double limit = share * std::sqrt(dot(span, span));
+  std::set<MeshEdge> kept, seen;
+  for (const MeshEdge& first : edges) {
+    if (seen.count(first)) continue;
+    std::vector<MeshEdge> group{first}, stack{first};
+    seen.insert(first);
+    while (!stack.empty()) {
+      const MeshEdge e = stack.back();
+      stack.pop_back();
+      for (const std::size_t v : e)
+        for (const MeshEdge& f : at[v])
+          if (seen.insert(f).second) group.push_back(f), stack.push_back(f);
+    }
+    double length = 0;
+    bool loose = false;
+    for (const MeshEdge& e : group) {
+      const Vec3 a = d.vertices()[e[0]], b = d.vertices()[e[1]];
+      length += std::sqrt(dot(b - a, b - a));
+      for (const std::size_t v : e) loose = loose || (at[v].size() == 1 && !boundary.count(v));
+    }
+    if (!loose || length >= limit) kept.insert(group.begin(), group.end());
+  }
+  return kept;
+}
+
 /// The patches the edges in `cuts` divide the surface into, as a label per triangle
 /// (brute force: triangles joined across every other edge they share).
 inline std::vector<std::size_t> expected_patches(const SurfaceDomain& d, const std::set<MeshEdge>& cuts) {

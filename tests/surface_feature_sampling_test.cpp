@@ -29,9 +29,11 @@
 namespace disktune {
 namespace {
 
+// Every edge by the angle rule, stray folds too: the elephant's many short ones are the
+// hard case for the fixed disks.
 std::shared_ptr<const SurfaceDomain> with_features(const SurfaceDomain& plain, double angle = 60) {
   SurfaceDomain d = plain;
-  d.set_features(detect_features(d, {angle, 60}));
+  d.set_features(detect_features(d, {angle, 60, 0}));
   return std::make_shared<const SurfaceDomain>(std::move(d));
 }
 

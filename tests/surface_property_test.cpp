@@ -110,7 +110,7 @@ TEST(SurfaceVoids, AMovedDiskHoldsItsVoidExactlyWhenThePackingStaysMaximal) {
        {Case{"fandisk.off", 0.04, true}, Case{"elephant.off", 0.02, true}, Case{"mesh_with_border.off", 0.3, false}}) {
     SCOPED_TRACE(file);
     SurfaceDomain d = *surface_file(file);
-    if (features) d.set_features(detect_features(d, {60, 60}));
+    if (features) d.set_features(detect_features(d, {60, 60, 0}));
     const auto surface = std::make_shared<const SurfaceDomain>(std::move(d));
     Rng rng(5);
     SurfacePacking packing = sample_mps(surface, SurfaceSizing::constant(r), rng);

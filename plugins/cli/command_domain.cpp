@@ -103,18 +103,30 @@ CommandDomain open_surface(const DomainArgs& args) {
 
 }  // namespace
 
-// The surface with the features --features asks for.
+// The surface with the features --features asks for: ANGLE[:STRAY] or none.
 std::shared_ptr<const SurfaceDomain> surface_with_features(const DomainArgs& args) {
   SurfaceDomain surface = disktune::read_surface(args.kind);
   if (args.features == "none") return std::make_shared<const SurfaceDomain>(std::move(surface));
+  FeatureOptions options;
+  const std::size_t colon = args.features.find(':');
+  const std::string angle = args.features.substr(0, colon);
+  const std::string stray = colon == std::string::npos ? "" : args.features.substr(colon + 1);
   char* end = nullptr;
-  const double angle = std::strtod(args.features.c_str(), &end);
-  if (args.features.empty() || *end != '\0' || !(angle > 0 && angle < 180)) {
-    throw InvalidInput("--features " + args.features +
-                       ": give a dihedral angle in degrees strictly between 0 and 180 (60 is the default), "
-                       "or 'none'");
+  options.angle = std::strtod(angle.c_str(), &end);
+  bool ok = !angle.empty() && *end == '\0' && options.angle > 0 && options.angle < 180;
+  if (ok && colon != std::string::npos) {
+    options.stray_length = std::strtod(stray.c_str(), &end);
+    ok = !stray.empty() && *end == '\0' && options.stray_length >= 0 && options.stray_length <= 1e6;
   }
-  surface.set_features(detect_features(surface, {angle, 60}));
+  if (!ok) {
+    throw InvalidInput(
+        "--features " + args.features +
+        ": give a dihedral angle in degrees strictly between 0 and 180 (60 is the default), "
+        "optionally with ':STRAY', the share of the bounding-box diagonal under which a group "
+        "of feature edges with a loose end is dropped (0.2 is the default, 0 keeps all), "
+        "or 'none'");
+  }
+  surface.set_features(detect_features(surface, options));
   return std::make_shared<const SurfaceDomain>(std::move(surface));
 }
 

@@ -22,9 +22,12 @@ void add_remesh_command(CLI::App& app, Action& action) {
       ->required();
   writes_file(cmd->add_option("--output,-o", job->output, "Mesh file to write: .off, .obj, .ply, .vtk, .vtu (VTK XML), .msh (Gmsh 4.1) or .stl (binary)"))->required();
   add_format_option(cmd, job->format);
-  cmd->add_option("--features", job->features,
-                  "Sharp edges to keep: edges whose triangles' normals differ by more than this many "
-                  "degrees (default 60), or 'none'")
+  cmd->add_option(
+         "--features", job->features,
+         "Sharp edges to keep: edges whose triangles' normals differ by more than ANGLE "
+         "degrees (default 60), less the stray folds (groups with a loose end shorter than "
+         "STRAY times the bounding-box diagonal; ANGLE:STRAY, default 0.2, 0 keeps all), "
+         "or 'none'")
       ->capture_default_str();
   cmd->add_option("--relax", job->relax_sweeps,
                   "Relaxation sweeps after the count is reached (0: none); more make the triangles "

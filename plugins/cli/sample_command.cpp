@@ -56,11 +56,14 @@ void add_domain_options(CLI::App* cmd, DomainArgs& domain) {
                   "(smaller where the surface bends more), or auto:RMAX (smaller where the surface "
                   "faces itself closely, as thin walls and ledges do, or its feature curves and "
                   "boundaries come close)");
-  cmd->add_option("--features", domain.features,
-                  "On a surface: edges where the surface folds by more than ANGLE degrees (the "
-                  "angle between their triangles' normals) are sharp features, chained into curves "
-                  "that hold fixed disks as open boundaries do, so the mesh keeps them as edges; "
-                  "'none' for no features (docs/surfaces.md)")
+  cmd->add_option(
+         "--features", domain.features,
+         "On a surface: edges where the surface folds by more than ANGLE degrees (the "
+         "angle between their triangles' normals) are sharp features, chained into curves "
+         "that hold fixed disks as open boundaries do, so the mesh keeps them as edges; "
+         "ANGLE:STRAY also drops stray folds, groups of them with a loose end shorter than "
+         "STRAY times the bounding-box diagonal (default 0.2; 0 keeps all); 'none' for no "
+         "features (docs/surfaces.md)")
       ->capture_default_str()
       ->each([&domain](const std::string&) { domain.has_features = true; });
 }

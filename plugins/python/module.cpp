@@ -89,21 +89,22 @@ std::shared_ptr<const PlanarDomain> planar_from(const py::handle& outer,
   return std::make_shared<const PlanarDomain>(points2(outer, "outer"), std::move(inner));
 }
 
-// A surface with the sharp features at `features` degrees (0 or None: none).
+// A surface with the sharp features at `features` degrees (0 or None: none), less the
+// stray folds shorter than `stray` times the bounding-box diagonal.
 std::shared_ptr<const SurfaceDomain> with_features(SurfaceDomain surface,
-                                                   std::optional<double> features) {
+                                                   std::optional<double> features, double stray) {
   const double angle = features.value_or(0);
   if (!(angle >= 0 && angle < 180)) {
     throw InvalidInput(
         "features: give a dihedral angle in degrees in (0, 180), or 0 / None for no features");
   }
-  if (angle > 0) surface.set_features(detect_features(surface, {angle, 60}));
+  if (angle > 0) surface.set_features(detect_features(surface, {angle, 60, stray}));
   return std::make_shared<const SurfaceDomain>(std::move(surface));
 }
 
 std::shared_ptr<const SurfaceDomain> surface_from(const py::handle& vertices,
                                                   const py::handle& faces,
-                                                  std::optional<double> features) {
+                                                  std::optional<double> features, double stray) {
   const auto v = table(vertices, 3, "vertices").unchecked<2>();
   auto f = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(faces);
   if (!f || f.ndim() != 2 || f.shape(1) != 3)
@@ -124,7 +125,7 @@ std::shared_ptr<const SurfaceDomain> surface_from(const py::handle& vertices,
     }
     triangles.push_back(tri);
   }
-  return with_features(SurfaceDomain(std::move(points), std::move(triangles)), features);
+  return with_features(SurfaceDomain(std::move(points), std::move(triangles)), features, stray);
 }
 
 // ---------------------------------------------------------------- errors and progress
@@ -479,18 +480,21 @@ PYBIND11_MODULE(disktune, m) {
       m, "Surface", "A triangulated surface, with the sharp features found at an angle.")
       .def(
           py::init([](const py::handle& vertices, const py::handle& faces,
-                      std::optional<double> features) {
-            return python::SurfaceHandle{surface_from(vertices, faces, features)};
+                      std::optional<double> features, double stray) {
+            return python::SurfaceHandle{surface_from(vertices, faces, features, stray)};
           }),
-          py::arg("vertices"), py::arg("faces"), py::arg("features") = 60.0,
+          py::arg("vertices"), py::arg("faces"), py::arg("features") = 60.0, py::arg("stray") = 0.2,
           "vertices: n x 3 array; faces: m x 3 vertex indices; features: dihedral angle in degrees "
-          "that makes an edge sharp (0 or None: no features)")
+          "that makes an edge sharp (0 or None: no features); stray: groups of sharp edges with a "
+          "loose end shorter than this share of the bounding-box diagonal are dropped (0 keeps "
+          "all)")
       .def_static(
           "read",
-          [](const std::string& path, std::optional<double> features) {
-            return python::SurfaceHandle{with_features(read_surface(path), features)};
+          [](const std::string& path, std::optional<double> features, double stray) {
+            return python::SurfaceHandle{with_features(read_surface(path), features, stray)};
           },
-          py::arg("path"), py::arg("features") = 60.0, "Reads an OFF, OBJ, PLY or STL file")
+          py::arg("path"), py::arg("features") = 60.0, py::arg("stray") = 0.2,
+          "Reads an OFF, OBJ, PLY or STL file")
       .def_property_readonly(
           "vertices", [](const python::SurfaceHandle& s) { return rows_of(s.domain->vertices()); })
       .def_property_readonly(

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Feature edges by the angle between the normals of their two triangles, then chained:
+// Feature edges by the angle between the normals of their two triangles, less stray
+// folds (short groups with a loose end), then chained:
 // corners first (where the curve cannot go on in one way), each curve walked from a
 // corner to the next, and what is left forms closed loops.
 #include "disktune/surface_features.h"
@@ -10,6 +11,7 @@
 
 #include "disktune/errors.h"
 #include "half_edges.h"
+#include "union_find.h"
 
 namespace disktune {
 namespace {
@@ -34,6 +36,44 @@ void check_angles(const FeatureOptions& o, bool need_angle) {
     msg << "feature corner angle must lie in (0, 180] degrees, got " << o.corner_angle;
     throw InvalidInput(msg.str());
   }
+  if (!(o.stray_length >= 0)) {
+    std::ostringstream msg;
+    msg << "feature stray length must be at least 0 (a share of the bounding-box diagonal), got "
+        << o.stray_length;
+    throw InvalidInput(msg.str());
+  }
+}
+
+// `edges` less the groups (connected through shared vertices) that have a loose end and
+// are shorter than o.stray_length times the bounding-box diagonal.
+std::vector<MeshEdge> without_stray_folds(const SurfaceDomain& d, std::vector<MeshEdge> edges,
+                                          const FeatureOptions& o) {
+  if (o.stray_length <= 0 || edges.empty()) return edges;
+  const std::size_t n = d.vertices().size();
+  std::vector<std::size_t> edges_at(n, 0);
+  detail::UnionFind groups(n);
+  for (const MeshEdge& e : edges) {
+    ++edges_at[e[0]], ++edges_at[e[1]];
+    groups.unite(e[0], e[1]);
+  }
+  std::vector<char> on_boundary(n, 0);
+  for (const auto& loop : d.boundary_loops())
+    for (const std::size_t v : loop) on_boundary[v] = 1;
+  std::vector<double> length(n, 0);
+  std::vector<char> loose(n, 0);
+  for (const MeshEdge& e : edges) {
+    const std::size_t g = groups.find(e[0]);
+    length[g] += norm(d.vertices()[e[1]] - d.vertices()[e[0]]);
+    for (const std::size_t v : e)
+      if (edges_at[v] == 1 && !on_boundary[v]) loose[g] = 1;
+  }
+  const double limit = o.stray_length * norm(d.bbox_max() - d.bbox_min());
+  std::vector<MeshEdge> kept;
+  for (const MeshEdge& e : edges) {
+    const std::size_t g = groups.find(e[0]);
+    if (!loose[g] || length[g] >= limit) kept.push_back(e);
+  }
+  return kept;
 }
 
 // Corners and curves of a set of feature edges (sorted, each once, all interior edges).
@@ -104,7 +144,7 @@ SurfaceFeatures detect_features(const SurfaceDomain& domain, const FeatureOption
     if (dot(unit_normal(domain, half[first].tri), unit_normal(domain, half[first + 1].tri)) < limit)
       edges.push_back({half[first].lo, half[first].hi});
   });
-  return chain(domain, std::move(edges), options);
+  return chain(domain, without_stray_folds(domain, std::move(edges), options), options);
 }
 
 SurfaceFeatures features_from_edges(const SurfaceDomain& domain, std::vector<MeshEdge> edges,

@@ -147,6 +147,14 @@ def test_a_surface_from_arrays():
     assert len(m.points) - edges + len(m.triangles) == 2  # a sphere
 
 
+def test_stray_folds_are_dropped_unless_asked_for():
+    path = os.path.join(DATA, "surfaces", "elephant.off")
+    assert disktune.Surface.read(path).feature_curves == 0  # short scratches with loose ends
+    assert disktune.Surface.read(path, stray=0).feature_curves == 84  # every 60-degree edge
+    v, f = octahedron()  # its 12 edges fold by 109.5 degrees: one network, kept
+    assert disktune.Surface(v, f).feature_curves == 12
+
+
 def test_remesh_gives_the_count_on_a_surface_of_genus_two():
     surface = disktune.Surface.read(os.path.join(DATA, "surfaces", "eight.off"))
     m = disktune.remesh(surface, vertices=1500, seed=1, relax_sweeps=5)
