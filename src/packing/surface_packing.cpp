@@ -32,16 +32,48 @@ std::uint64_t SpaceGrid::pack(std::int64_t i, std::int64_t j, std::int64_t k) {
 
 std::uint64_t SpaceGrid::key(Vec3 p) const { return pack(coord(p.x), coord(p.y), coord(p.z)); }
 
+std::size_t SpaceGrid::slot_of(std::uint64_t key) const {
+  // A 64-bit mix (splitmix64's finaliser): neighbouring cells land far apart.
+  std::uint64_t h = key;
+  h = (h ^ (h >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  h = (h ^ (h >> 27)) * 0x94d049bb133111ebULL;
+  h ^= h >> 31;
+  const std::size_t mask = table_.size() - 1;
+  std::size_t at = static_cast<std::size_t>(h) & mask;
+  while (table_[at].key != key && table_[at].key != kEmpty) at = (at + 1) & mask;
+  return at;
+}
+
+const std::vector<SpaceGrid::Item>* SpaceGrid::items_of(std::uint64_t key) const {
+  const Cell& cell = table_[slot_of(key)];
+  return cell.key == key ? &cell.items : nullptr;
+}
+
+std::vector<SpaceGrid::Item>& SpaceGrid::items_at(std::uint64_t key) {
+  if (2 * (used_ + 1) > table_.size()) {  // grow: at most half full keeps probes short
+    std::vector<Cell> old(std::max<std::size_t>(64, 2 * table_.size()));
+    old.swap(table_);
+    for (Cell& c : old)
+      if (c.key != kEmpty) table_[slot_of(c.key)] = std::move(c);
+  }
+  Cell& cell = table_[slot_of(key)];
+  if (cell.key == kEmpty) {
+    cell.key = key;
+    ++used_;
+  }
+  return cell.items;
+}
+
 void SpaceGrid::remove(std::uint32_t id, Vec3 p) {
-  const auto it = cells_.find(key(p));
-  if (it == cells_.end()) return;
-  auto& v = it->second;
-  const auto at = std::find(v.begin(), v.end(), id);
+  if (used_ == 0) return;
+  Cell& cell = table_[slot_of(key(p))];
+  if (cell.key != key(p)) return;
+  auto& v = cell.items;
+  const auto at = std::find_if(v.begin(), v.end(), [&](const Item& item) { return item.id == id; });
   if (at != v.end()) {
     *at = v.back();
     v.pop_back();
   }
-  if (v.empty()) cells_.erase(it);
 }
 
 // ---- SurfaceIndex ----
@@ -247,15 +279,15 @@ std::vector<DiskId> SurfacePacking::ids() const {
 }
 
 bool SurfacePacking::conflicts(Vec3 q, PatchSet on, DiskId ignore1, DiskId ignore2) const {
-  return any_near(q, max_radius(), [&](DiskId j) {
-    return j != ignore1 && j != ignore2 && is_conflict(squared_norm(point_[j].p - q), radius_[j]) &&
+  return grid_.any_within(q, max_radius(), [&](DiskId j, double d2) {
+    return j != ignore1 && j != ignore2 && is_conflict(d2, radius_[j]) &&
            share_patch(patches_[j], on);
   });
 }
 
 bool SurfacePacking::covered(Vec3 q, PatchSet on, DiskId ignore1, DiskId ignore2) const {
-  return any_near(q, max_radius() * (1 + kRelTol), [&](DiskId j) {
-    return j != ignore1 && j != ignore2 && is_covered(squared_norm(point_[j].p - q), radius_[j]) &&
+  return grid_.any_within(q, max_radius() * (1 + kRelTol), [&](DiskId j, double d2) {
+    return j != ignore1 && j != ignore2 && is_covered(d2, radius_[j]) &&
            share_patch(patches_[j], on);
   });
 }
