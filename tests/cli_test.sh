@@ -223,6 +223,9 @@ printf 'x,y,r\n0.5,0.5,0.05\n0.2,0.7,0.05\n0.5,0.5,0.05\n' >twice.csv
 expect mesh-same-center 2 "coincide" -- "$bin" mesh twice.csv --radius 0.05 --output never.off
 absent mesh-refused-output never.off
 expect report 0 "^report: $n disks, eta = 0\.5[0-9]+, rho = [0-9.]+, maximal, conflict-free" -- "$bin" report q.csv --radius 0.05 --json q.json --svg q.svg
+# The bond order (#19): a maximal sample is far from one lattice; the JSON holds the grains
+expect report-order 0 "^order: psi6 0\.[01][0-9]* \(local mean 0\.[0-9]+\), [0-9.]+ % of the disks hexagonal, [0-9]+ grains" -- "$bin" report q.csv --radius 0.05
+grep -q '"grains"' q.json && grep -q '"psi6_global"' q.json && pass=$((pass + 1)) || { echo "FAIL report order keys"; fails=$((fails + 1)); }
 grep -q '"local_beta"' q.json && tail -n 1 q.svg | grep -qx "</svg>" && pass=$((pass + 1)) || { echo "FAIL report files"; fails=$((fails + 1)); }
 # Without --radius or --sizing, mesh, report and tune take the one radius the CSV holds
 expect report-radius-from-csv 0 "^report: $n disks, eta = 0\.5[0-9]+, .*maximal, conflict-free" -- "$bin" report q.csv
@@ -268,10 +271,10 @@ expect report-bad-folder 3 "does not exist" -- "$bin" report q.csv --radius 0.05
 grep -q '"effective_nyquist"' q.json && pass=$((pass + 1)) || { echo "FAIL report spectrum key"; fails=$((fails + 1)); }
 mkdir pics
 expect report-png 0 "^spectrum: window \|k\| < [0-9]+" -- "$bin" report q.csv --radius 0.05 --png-dir pics
-for f in spectrum radial_mean anisotropy angles edges; do
+for f in spectrum radial_mean anisotropy angles edges orientation; do
   [ -s "pics/$f.png" ] && head -c 8 "pics/$f.png" | grep -q PNG && pass=$((pass + 1)) || { echo "FAIL pics/$f.png"; fails=$((fails + 1)); }
 done
-[ "$(ls pics | wc -l)" -eq 5 ] && pass=$((pass + 1)) || { echo "FAIL pics: other files left"; fails=$((fails + 1)); }
+[ "$(ls pics | wc -l)" -eq 6 ] && pass=$((pass + 1)) || { echo "FAIL pics: other files left"; fails=$((fails + 1)); }
 expect report-png-missing-folder 3 "picture folder 'nopics' does not exist" -- "$bin" report q.csv --radius 0.05 --json never.json --png-dir nopics
 absent report-png-missing-folder-json never.json
 absent report-png-missing-folder-dir nopics

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "disktune/bond_order.h"
 #include "disktune/mesh.h"
 #include "disktune/packing.h"
 #include "disktune/surface_mesh.h"
@@ -65,6 +66,8 @@ struct QualityReport {
     Statistics cell_area;     // the mean is W H / N: the cells tile the torus
     double cell_area_cv = 0;  // standard deviation / mean of the cell areas
   } voronoi;
+
+  BondOrder order;  // psi6 and crystalline grains (bond_order.h)
 };
 
 /// Angle statistics (degrees) of any set of triangles: a torus mesh, a planar mesh, or
@@ -101,6 +104,7 @@ struct PlanarQualityReport {
   double min_distance_over_r = 0;
   bool maximal = false, conflict_free = false;  // conflict: a pair covering each other's centers
   PlanarMeshQuality all, interior, boundary;   // edges over the mean radius of their ends
+  BondOrder order;  // psi6 and grains, boundary disks included (bond_order.h)
 };
 /// Throws InvalidInput for an empty packing.
 PlanarQualityReport measure_planar_quality(const Packing& packing, const PlanarMesh& mesh, double area);

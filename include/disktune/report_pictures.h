@@ -7,6 +7,7 @@
 #include <string>
 
 #include "disktune/fiber_statistics.h"
+#include "disktune/packing.h"
 #include "disktune/quality.h"
 #include "disktune/spectrum.h"
 
@@ -15,11 +16,14 @@ namespace disktune {
 /// Writes into the existing folder `dir`: angles.png and edges.png (histograms of the
 /// report) and, when a spectrum is given, spectrum.png (log10 P from -2 black to 1
 /// white, DC at the center, ky up), radial_mean.png and anisotropy.png (line plots over
-/// normalised frequency, dashed gray references at 1 and 0 dB, y cut at 4 and +-30 dB). Every picture is drawn
+/// normalised frequency, dashed gray references at 1 and 0 dB, y cut at 4 and +-30 dB);
+/// when the packing measured is given, orientation.png (its disks at half their radius,
+/// 800 pixels across, each locally hexagonal one colored by its lattice orientation
+/// around the color wheel over 60 degrees, the others light gray). Every picture is drawn
 /// before any file is written, and each file is written atomically. Throws IoError when
 /// `dir` is not an existing folder (nothing written) or a file cannot be written.
 void write_report_pictures(const std::string& dir, const QualityReport& report,
-                           const Spectrum* spectrum = nullptr);
+                           const Spectrum* spectrum = nullptr, const Packing* packing = nullptr);
 
 /// Writes into the existing folder `dir`: cell.png (the cell, 800 pixels across its width,
 /// fiber i a blue disk of diameter diameters[i], those cut by a side completed by their

@@ -41,6 +41,16 @@ std::string angle_range(const PlanarMeshQuality& part) {
   return text;
 }
 
+// The bond order's line: psi6 and the crystalline grains (nothing under 7 disks).
+void say_order(const BondOrder& o) {
+  if (o.count == 0) return;
+  say("order: psi6 %.3f (local mean %.3f), %.1f %% of the disks hexagonal, %zu grains (largest %zu "
+      "disks, "
+      "%.1f %% of all in grains)\n",
+      o.psi6_global, o.psi6_local_mean, 100 * o.hexagonal_share, o.grain_count, o.largest_grain,
+      100 * o.grain_share);
+}
+
 // A planar domain: the constrained Delaunay mesh, its triangles measured all together,
 // inside and along the boundary (no spectrum: it needs the periodic box).
 int run_planar_report(const ReportArgs& args, const CommandDomain& domain) {
@@ -63,6 +73,7 @@ int run_planar_report(const ReportArgs& args, const CommandDomain& domain) {
       100 * q.all.angles.fraction_50_70, angle_range(q.interior).c_str(), angle_range(q.boundary).c_str(),
       q.all.local_beta.max,
       args.json.empty() ? "" : " -> ", args.json.c_str());
+  say_order(q.order);
   return kExitOk;
 }
 
@@ -101,7 +112,7 @@ int run_report(const ReportArgs& given) {
   const QualityReport q = measure_quality(packing, mesh, args.domain.radius);
   const Spectrum* s = spectrum ? &*spectrum : nullptr;
   if (!args.json.empty()) write_json(args.json, quality_json(q, s));
-  if (!args.png_dir.empty()) write_report_pictures(args.png_dir, q, s);
+  if (!args.png_dir.empty()) write_report_pictures(args.png_dir, q, s, &packing);
   if (!args.svg.empty()) write_mesh_svg(args.svg, mesh, packing);
   say(
       "report: %zu disks, eta = %.4f, rho = %.4f, %s, %s, distance >= %.4f r, "
@@ -110,6 +121,7 @@ int run_report(const ReportArgs& given) {
       q.conflict_free ? "conflict-free" : "CONFLICTS", q.min_distance_over_r, q.max_coverage_over_r,
       q.angles.min, q.angles.max, q.angles.mean_abs_dev_60, q.local_beta.max,
       args.json.empty() ? "" : " -> ", args.json.c_str());
+  say_order(q.order);
   return kExitOk;
 }
 
@@ -130,8 +142,9 @@ void add_report_command(CLI::App& app, Action& action) {
   writes_file(cmd->add_option("--json", args->json, "Write the full report (with histograms) as JSON"));
   writes_file(cmd->add_option("--svg", args->svg, "Draw the mesh over the disks (at r/2) as an SVG picture"));
   cmd->add_option("--png-dir", args->png_dir,
-                  "Write spectrum.png, radial_mean.png, anisotropy.png, angles.png and edges.png "
-                  "into this existing folder");
+                  "Write spectrum.png, radial_mean.png, anisotropy.png, angles.png, edges.png and "
+                  "orientation.png (disks colored by their lattice orientation where locally "
+                  "hexagonal) into this existing folder");
   cmd->add_flag("--no-spectrum", args->no_spectrum, "Skip the spectrum (seconds for 1e5 disks)");
   cmd->add_option("--spectrum-window", args->spectrum_window,
                   "Spectrum frequencies |kx|, |ky| < K (default: reach normalised frequency 3, "

@@ -2,6 +2,7 @@
 #include "disktune/fiber_statistics.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <complex>
 #include <string>
@@ -10,6 +11,7 @@
 #include "disktune/errors.h"
 #include "disktune/mesh.h"
 #include "disktune/packing.h"
+#include "local_psi6.h"
 #include "mesh_shape.h"
 
 namespace disktune {
@@ -198,14 +200,14 @@ FiberStatistics fiber_statistics(const PeriodicBox& cell, const std::vector<Vec2
       if (near.size() >= 6 || reach > 2 * std::max(w, h)) break;
     }
     std::sort(near.begin(), near.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-    std::complex<double> local = 0;
+    std::array<Vec2, 6> bonds;
     for (int k = 0; k < 6; ++k) {
       const double d = std::sqrt(near[k].first) / diameter;
       nearest[k].push_back(d);
       add(s.nearest_histogram[k], d);
-      local += std::polar(1.0, 6 * std::atan2(near[k].second.y, near[k].second.x));
+      bonds[k] = near[k].second;
     }
-    local /= 6.0;
+    const std::complex<double> local = detail::local_psi6(bonds);
     psi6_sum += local;
     s.psi6_local_mean += std::abs(local);
     hexagonal += std::abs(local) > 0.9;

@@ -282,6 +282,7 @@ QualityReport measure_quality(const Packing& packing, const TriangleMesh& mesh, 
   q.local_beta = beta_statistics(betas);
   q.voronoi.aspect_ratio = statistics(aspects);
   q.voronoi.cell_area = statistics(areas);
+  q.order = bond_order(packing);
   q.voronoi.cell_area_cv = q.voronoi.cell_area.stddev / q.voronoi.cell_area.mean;
   return q;
 }
@@ -317,6 +318,7 @@ PlanarQualityReport measure_planar_quality(const Packing& packing, const PlanarM
   }
   if (!interior.triangles.empty()) q.interior = measure_planar_mesh(interior, vertex_radius);
   if (!boundary.triangles.empty()) q.boundary = measure_planar_mesh(boundary, vertex_radius);
+  q.order = bond_order(packing);
   return q;
 }
 

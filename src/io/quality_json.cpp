@@ -59,6 +59,22 @@ void write_text(const std::string& path, const std::string& text) {
   write_file_atomically(path, [&](std::ostream& out) { out << text; });
 }
 
+// The bond order's figures (not its per-disk arrays); null when it was not measured.
+json order_json(const BondOrder& o) {
+  if (o.count == 0) return nullptr;
+  return {{"psi6_global", o.psi6_global},
+          {"psi6_local_mean", o.psi6_local_mean},
+          {"hexagonal_share", o.hexagonal_share},
+          {"hexagonal_above", kHexagonalPsi6},
+          {"grains",
+           {{"count", o.grain_count},
+            {"largest", o.largest_grain},
+            {"mean_size", o.grain_mean_size},
+            {"share", o.grain_share},
+            {"angle_within_degrees", kGrainAngle},
+            {"min_size", kMinGrain}}}};
+}
+
 }  // namespace
 
 std::string quality_json(const QualityReport& q, const Spectrum* spectrum) {
@@ -80,6 +96,7 @@ std::string quality_json(const QualityReport& q, const Spectrum* spectrum) {
   j["voronoi"] = {{"aspect_ratio", to_json(q.voronoi.aspect_ratio)},
                   {"cell_area", to_json(q.voronoi.cell_area)},
                   {"cell_area_cv", q.voronoi.cell_area_cv}};
+  j["order"] = order_json(q.order);
   if (spectrum) {
     const Spectrum& s = *spectrum;
     j["spectrum"] = {{"window", s.window},
@@ -112,6 +129,7 @@ std::string quality_json(const PlanarQualityReport& q) {
   j["mesh"] = mesh_json(q.all);
   j["interior_triangles"] = mesh_json(q.interior);
   j["boundary_triangles"] = mesh_json(q.boundary);
+  j["order"] = order_json(q.order);
   return j.dump(2) + "\n";
 }
 

@@ -128,16 +128,18 @@ Raster histogram_plot(const Histogram& h, PlotText text) {
   return std::move(plot.raster());
 }
 
-// The cell with its fibers: a pixel is blue when its center lies in a fiber (or one of
-// its periodic images), found from the fibers whose box covers the pixel's row.
-Raster cell_image(const PeriodicBox& cell, const std::vector<Vec2>& centers, const std::vector<double>& diameters) {
+// Disks in a periodic cell, 800 pixels across: a pixel takes disk i's color when its
+// center lies in that disk (or one of its periodic images), found from the disks whose
+// box covers the pixel's row.
+Raster disks_image(double w, double h, const std::vector<Vec2>& centers,
+                   const std::vector<double>& radii, const std::vector<Rgb>& colors) {
   constexpr int kCellWidth = 800;
-  const double w = cell.width(), h = cell.height(), scale = kCellWidth / w;
+  const double scale = kCellWidth / w;
   const int height = std::max(1, static_cast<int>(std::lround(h * scale)));
   Raster r(kCellWidth, height, {255, 255, 255});
   for (std::size_t i = 0; i < centers.size(); ++i) {
     const Vec2 c = centers[i];
-    const double radius = diameters[i] / 2;
+    const double radius = radii[i];
     for (const double dx : {-w, 0.0, w}) {
       for (const double dy : {-h, 0.0, h}) {
         const double cx = c.x + dx, cy = c.y + dy;
@@ -150,7 +152,7 @@ Raster cell_image(const PeriodicBox& cell, const std::vector<Vec2>& centers, con
           const double reach = std::sqrt(half);
           const int x0 = std::max(0, static_cast<int>(std::ceil((cx - reach) * scale - 0.5)));
           const int x1 = std::min(kCellWidth - 1, static_cast<int>(std::floor((cx + reach) * scale - 0.5)));
-          if (x0 <= x1) r.fill_rect(x0, py, x1, py, kBlue);
+          if (x0 <= x1) r.fill_rect(x0, py, x1, py, colors[i]);
         }
       }
     }
@@ -158,7 +160,55 @@ Raster cell_image(const PeriodicBox& cell, const std::vector<Vec2>& centers, con
   return r;
 }
 
-// Curves over r / D: the arrangement's in blue, the sample's in orange.
+// The fibers in blue.
+Raster cell_image(const PeriodicBox& cell, const std::vector<Vec2>& centers,
+                  const std::vector<double>& diameters) {
+  std::vector<double> radii;
+  for (const double d : diameters) radii.push_back(d / 2);
+  return disks_image(cell.width(), cell.height(), centers, radii,
+                     std::vector<Rgb>(centers.size(), kBlue));
+}
+
+// A hue for a lattice orientation in [0, 60) degrees: the color wheel once around.
+Rgb orientation_color(double degrees) {
+  const double hue = degrees / 60 * 6;  // six sectors
+  const int sector = static_cast<int>(hue) % 6;
+  const double f = hue - std::floor(hue);
+  const auto level = [](double v) { return static_cast<std::uint8_t>(std::lround(40 + 190 * v)); };
+  const std::uint8_t hi = level(1), lo = level(0), up = level(f), down = level(1 - f);
+  switch (sector) {
+    case 0:
+      return {hi, up, lo};
+    case 1:
+      return {down, hi, lo};
+    case 2:
+      return {lo, hi, up};
+    case 3:
+      return {lo, down, hi};
+    case 4:
+      return {up, lo, hi};
+    default:
+      return {hi, lo, down};
+  }
+}
+
+// Each disk (drawn at half its radius: the disks of the area fraction, which do not
+// overlap) colored by its lattice orientation where it is locally hexagonal, light gray
+// where it is not.
+Raster orientation_image(const Packing& packing, const BondOrder& order) {
+  std::vector<Vec2> centers;
+  std::vector<double> radii;
+  std::vector<Rgb> colors;
+  const std::vector<DiskId> ids = packing.ids();
+  for (std::size_t i = 0; i < ids.size(); ++i) {
+    centers.push_back(packing.frame().wrap(packing.center(ids[i])) - packing.frame().origin);
+    radii.push_back(packing.radius(ids[i]) / 2);
+    colors.push_back(order.local[i] > kHexagonalPsi6 ? orientation_color(order.orientation[i])
+                                                     : Rgb{205, 205, 205});
+  }
+  return disks_image(packing.frame().extent.x, packing.frame().extent.y, centers, radii, colors);
+}
+
 Raster curves_plot(const FiberStatistics& stats, const FiberStatistics* sample, double reference,
                    double (*value)(const FiberStatistics&, std::size_t), PlotText text) {
   const auto curve = [&](const FiberStatistics& s) {
@@ -218,9 +268,11 @@ void check_picture_folder(const std::string& dir) {
 }
 
 void write_report_pictures(const std::string& dir, const QualityReport& report,
-                           const Spectrum* spectrum) {
+                           const Spectrum* spectrum, const Packing* packing) {
   check_picture_folder(dir);
   std::vector<std::pair<std::string, Raster>> pictures;
+  if (packing && report.order.count == packing->size())
+    pictures.emplace_back("orientation.png", orientation_image(*packing, report.order));
   pictures.emplace_back("angles.png", histogram_plot(report.angles.histogram,
                                                      {"Angles of the Delaunay triangles", "angle (degrees)", "angles"}));
   pictures.emplace_back("edges.png", histogram_plot(report.edges.histogram,

@@ -173,6 +173,7 @@ def test_report_is_a_dict_of_the_json_report():
     json.dumps(r)
     assert r["maximal"] and r["conflict_free"]
     assert r["count"] == len(s)
+    assert 0 <= r["order"]["psi6_global"] < 0.2 and r["order"]["grains"]["count"] >= 0
     with_spectrum = disktune.report(s)
     assert "spectrum" in with_spectrum
     assert disktune.report(s, threads=1)["spectrum"] == with_spectrum["spectrum"]
