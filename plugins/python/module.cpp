@@ -8,6 +8,8 @@
 #include <pybind11/stl.h>
 
 #include <cmath>
+#include <functional>
+#include <memory>
 #include <numeric>
 #include <optional>
 #include <string>
@@ -234,7 +236,24 @@ struct PyMesh {
   py::array_t<std::int64_t> triangles;
   py::array_t<std::int64_t> disks;
   py::object report = py::none();
+  /// Writes the library's mesh (kept beside the arrays) to a path, in the format named
+  /// or else the one of its extension.
+  std::function<void(const std::string&, const std::optional<std::string>&)> write;
 };
+
+// A writer for one of the library's meshes, kept by value.
+template <class Mesh, class Write, class WriteAs>
+std::function<void(const std::string&, const std::optional<std::string>&)> writer_of(
+    Mesh mesh, Write write, WriteAs write_as) {
+  auto kept = std::make_shared<const Mesh>(std::move(mesh));
+  return
+      [kept, write, write_as](const std::string& path, const std::optional<std::string>& format) {
+        if (format)
+          write_as(path, *kept, mesh_format_named(*format));
+        else
+          write(path, *kept);
+      };
+}
 
 py::dict mesh_check_dict(const SurfaceMeshCheck& c) {
   return py::dict(
@@ -253,6 +272,11 @@ PyMesh surface_mesh_of(const SurfaceMesh& m) {
   std::vector<std::int64_t> disks(m.vertices.size());
   std::iota(disks.begin(), disks.end(), 0);
   out.disks = array_of(disks);
+  out.write = writer_of(
+      m, [](const std::string& path, const SurfaceMesh& k) { write_surface_mesh(path, k); },
+      [](const std::string& path, const SurfaceMesh& k, MeshFormat f) {
+        write_surface_mesh(path, k, f);
+      });
   return out;
 }
 
@@ -277,6 +301,9 @@ PyMesh mesh_of(const PyPacking& packing) {
     }
     for (const DiskId id : m.vertex_disk) disks.push_back(rows.at(id));
     out.points = rows_of(m.vertices), out.triangles = rows_of(m.triangles);
+    out.write = writer_of(
+        std::move(m), [](const std::string& path, const PlanarMesh& k) { write_mesh(path, k); },
+        [](const std::string& path, const PlanarMesh& k, MeshFormat f) { write_mesh(path, k, f); });
   } else {
     const auto rows = packing.rows();
     TriangleMesh m;
@@ -286,6 +313,11 @@ PyMesh mesh_of(const PyPacking& packing) {
     }
     for (const DiskId id : m.vertex_disk) disks.push_back(rows.at(id));
     out.points = rows_of(m.vertices), out.triangles = rows_of(m.triangles);
+    out.write = writer_of(
+        std::move(m), [](const std::string& path, const TriangleMesh& k) { write_mesh(path, k); },
+        [](const std::string& path, const TriangleMesh& k, MeshFormat f) {
+          write_mesh(path, k, f);
+        });
   }
   out.disks = array_of(disks);
   return out;
@@ -566,7 +598,17 @@ PYBIND11_MODULE(disktune, m) {
       .def_readonly("disks", &PyMesh::disks,
                     "for each vertex the row of its disk in the packing (periodic copies across "
                     "the seam repeat it)")
-      .def_readonly("report", &PyMesh::report, "remesh's quality figures (None for mesh())");
+      .def_readonly("report", &PyMesh::report, "remesh's quality figures (None for mesh())")
+      .def(
+          "write",
+          [](const PyMesh& mesh, const std::string& path, std::optional<std::string> format) {
+            py::gil_scoped_release released;
+            mesh.write(path, format);
+          },
+          py::arg("path"), py::arg("format") = py::none(),
+          "Writes the mesh atomically: OFF, OBJ, PLY, VTK, VTU, MSH or STL by the path's "
+          "extension, or the format named (off, obj, ply, ply-binary, vtk, vtu, msh, stl); a "
+          "surface mesh's feature edges go as lines into OBJ, VTK, VTU and MSH");
 
   py::class_<PyRve>(m, "Rve", "A periodic cell of non-overlapping fibers.")
       .def_property_readonly("centers", [](const PyRve& r) { return rows_of(r.rve.centers); })

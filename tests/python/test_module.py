@@ -283,6 +283,26 @@ def test_the_readme_example_hands_the_mesh_to_meshio():
             os.remove(path)
 
 
+def test_meshes_write_themselves_in_the_librarys_formats(tmp_path):
+    meshio = pytest.importorskip("meshio")
+    surface = disktune.Surface.read(os.path.join(DATA, "surfaces", "eight.off"))
+    m = disktune.remesh(surface, vertices=400, relax_sweeps=2)
+    m.write(str(tmp_path / "e.vtu"))
+    back = meshio.read(str(tmp_path / "e.vtu"))
+    assert np.allclose(back.points, m.points) and np.array_equal(back.cells_dict["triangle"], m.triangles)
+    m.write(str(tmp_path / "e.mesh"), format="off")  # the format named, whatever the extension
+    assert open(tmp_path / "e.mesh").readline().strip() == "OFF"
+    planar = disktune.mesh(disktune.sample(radius=0.1, domain=disktune.PlanarDomain(square(0, 1)), seed=2))
+    planar.write(str(tmp_path / "p.obj"))
+    lines = open(tmp_path / "p.obj").read().split("\n")
+    assert sum(line.startswith("v ") for line in lines) == len(planar.points)
+    assert sum(line.startswith("f ") for line in lines) == len(planar.triangles)
+    with pytest.raises(disktune.IoError):
+        m.write(str(tmp_path / "no" / "such" / "e.off"))
+    with pytest.raises(disktune.InvalidInput):
+        m.write(str(tmp_path / "e.off"), format="dxf")
+
+
 def test_a_surface_report_and_a_planar_report():
     v, f = octahedron()
     s = disktune.sample(radius=0.15, domain=disktune.Surface(v, f), seed=3)
