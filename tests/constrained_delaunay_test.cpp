@@ -375,8 +375,17 @@ TEST(MeshIo, PlanarMeshInEveryFormat) {
     ++faces;
   }
   EXPECT_EQ(faces, m.triangles.size());
+  // The triangles, then the boundary edges as lines (one per disk on a boundary loop).
+  std::size_t on_loops = 0;
+  for (const auto& loop : s.loops) on_loops += loop.size();
+  ASSERT_EQ(m.boundary_edges.size(), on_loops);
+  const std::size_t nt = m.triangles.size();
   const std::string vtk = text("m.vtk");
-  EXPECT_NE(vtk.find("CELLS " + std::to_string(m.triangles.size()) + " "), std::string::npos);
+  EXPECT_NE(vtk.find("CELLS " + std::to_string(nt + on_loops) + " " +
+                     std::to_string(4 * nt + 3 * on_loops) + "\n"),
+            std::string::npos);
+  EXPECT_EQ(std::count(obj.begin(), obj.end(), '\n') - std::count(obj.begin(), obj.end(), '#'),
+            static_cast<std::ptrdiff_t>(m.vertices.size() + nt + on_loops));  // v, f and l lines
   EXPECT_NE(vtk.find("SCALARS disk_id unsigned_int 1\nLOOKUP_TABLE default\n"), std::string::npos);
   const std::string svg = text("m.svg");
   EXPECT_NE(svg.find("<circle"), std::string::npos);

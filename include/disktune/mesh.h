@@ -51,6 +51,11 @@ struct PlanarMesh {
   std::vector<DiskId> vertex_disk;
   /// Counterclockwise vertex triples.
   std::vector<std::array<std::uint32_t, 3>> triangles;
+  /// The boundary's edges (the constrained segments), each as its two vertex indices in
+  /// the order of its loop, and the loop each lies on (0 the outer boundary, then the
+  /// holes); written as lines, named by loop in Gmsh files.
+  std::vector<std::array<std::uint32_t, 2>> boundary_edges = {};
+  std::vector<std::uint32_t> boundary_loop = {};
 };
 
 /// The constrained Delaunay triangulation (CGAL) of the live disk centers of a packing

@@ -27,9 +27,11 @@ MeshFormat mesh_format_named(const std::string& name);
 
 /// Writes the mesh's vertices (z = 0) and triangles in the format of `path`'s
 /// extension. The VTK files also carry each vertex's disk id (point data `disk_id`),
-/// which tells the copies across the seam from the disks themselves; OBJ, VTK and MSH
-/// files carry a surface mesh's feature edges as lines; STL (binary, 32-bit floats)
-/// has no shared vertices, so it keeps only the triangles' shape.
+/// which tells the copies across the seam from the disks themselves; OBJ, VTK, VTU and
+/// MSH files carry a surface mesh's feature edges and a planar mesh's boundary edges as
+/// lines, which MSH puts in named physical groups ("feature edges"; "outer boundary",
+/// "hole 1", ...; the triangles in "surface", "domain" or "torus"); STL (binary, 32-bit
+/// floats) has no shared vertices, so it keeps only the triangles' shape.
 void write_mesh(const std::string& path, const TriangleMesh& mesh);
 void write_mesh(const std::string& path, const TriangleMesh& mesh, MeshFormat format);
 /// The same for a planar mesh; its VTK `disk_id` is kNoDisk for a vertex that is no disk.

@@ -24,13 +24,29 @@ namespace {
 using detail::put_number;
 
 /// What the formats need of a mesh. `vertex_disk`, when given, goes into the VTK file
-/// as point data; `title` names the mesh in the OBJ, PLY and VTK headers.
+/// as point data; `title` names the mesh in the OBJ, PLY and VTK headers. `lines` (a
+/// surface's feature edges, a planar domain's boundary) go into OBJ, VTK, VTU and MSH,
+/// in groups: line k in group (*line_group)[k] (all in group 0 without it), named by
+/// `group_names` (Gmsh physical names, OBJ comments), the triangles by `surface_name`.
 struct MeshView {
   std::vector<Vec3> vertices;
   const std::vector<DiskId>* vertex_disk;
   const std::vector<std::array<std::uint32_t, 3>>& triangles;
   std::string title;
-  const std::vector<std::array<std::uint32_t, 2>>* lines = nullptr;  // OBJ and VTK only
+  const std::vector<std::array<std::uint32_t, 2>>* lines = nullptr;
+  const std::vector<std::uint32_t>* line_group = nullptr;
+  std::vector<std::string> group_names = {};
+  std::string surface_name = "surface";
+
+  std::size_t line_count() const { return lines ? lines->size() : 0; }
+  std::uint32_t group_of(std::size_t k) const { return line_group ? (*line_group)[k] : 0; }
+  /// The lines of group g, in their order.
+  std::vector<std::array<std::uint32_t, 2>> lines_in(std::uint32_t g) const {
+    std::vector<std::array<std::uint32_t, 2>> out;
+    for (std::size_t k = 0; k < line_count(); ++k)
+      if (group_of(k) == g) out.push_back((*lines)[k]);
+    return out;
+  }
 };
 
 std::vector<Vec3> in_plane(const std::vector<Vec2>& points) {
@@ -83,37 +99,48 @@ void put_vtu(std::ostream& out, const MeshView& mesh) {
 }
 
 // Gmsh's MSH 4.1, ASCII: the vertices as nodes 1..n of surface 1, the triangles
-// (element type 2) on it, the lines (type 1) on curve 1. Gmsh wants every entity an
-// element names declared ($Entities, with its bounding box), not only those that hold
-// nodes.
+// (element type 2) on it, each group of lines (type 1) on a curve of its own (group g
+// on curve g + 1); the surface is physical group 1 and curve g + 1 physical group
+// g + 2, named. Gmsh wants every entity an element names declared ($Entities, with its
+// bounding box), not only those that hold nodes.
 void put_msh(std::ostream& out, const MeshView& mesh) {
-  const std::size_t nv = mesh.vertices.size(), nt = mesh.triangles.size(), nl = mesh.lines ? mesh.lines->size() : 0;
+  const std::size_t nv = mesh.vertices.size(), nt = mesh.triangles.size(), nl = mesh.line_count();
+  const std::size_t groups = nl ? mesh.group_names.size() : 0;
   Vec3 lo{0, 0, 0}, hi{0, 0, 0};
   for (std::size_t k = 0; k < nv; ++k) {
     const Vec3 p = mesh.vertices[k];
     lo = k ? Vec3{std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)} : p;
     hi = k ? Vec3{std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)} : p;
   }
-  const auto entity = [&] {  // "1 <box> 0 0": tag 1, no physical group, no boundary
-    out << "1 ";
+  // "<tag> <box> 1 <physical> 0": one physical group, no boundary entities.
+  const auto entity = [&](std::size_t tag, std::size_t physical) {
+    out << tag << ' ';
     for (const double x : {lo.x, lo.y, lo.z, hi.x, hi.y, hi.z}) put_number(out, x), out << ' ';
-    out << "0 0\n";
+    out << "1 " << physical << " 0\n";
   };
-  out << "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Entities\n0 " << (nl ? 1 : 0) << " 1 0\n";
-  if (nl) entity();
-  entity();
+  const auto quoted = [](const std::string& name) { return '"' + name + '"'; };
+  out << "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$PhysicalNames\n"
+      << groups + 1 << "\n2 1 " << quoted(mesh.surface_name) << '\n';
+  for (std::size_t g = 0; g < groups; ++g)
+    out << "1 " << g + 2 << ' ' << quoted(mesh.group_names[g]) << '\n';
+  out << "$EndPhysicalNames\n$Entities\n0 " << groups << " 1 0\n";
+  for (std::size_t g = 0; g < groups; ++g) entity(g + 1, g + 2);
+  entity(1, 1);
   out << "$EndEntities\n$Nodes\n1 " << nv << " 1 " << nv << "\n2 1 0 " << nv << '\n';
   for (std::size_t k = 1; k <= nv; ++k) out << k << '\n';
   put_vertices(out, mesh, "");
   const std::size_t elements = nt + nl;
-  out << "$EndNodes\n$Elements\n" << (nl ? 2 : 1) << ' ' << elements << " 1 " << elements << "\n2 1 2 " << nt << '\n';
+  out << "$EndNodes\n$Elements\n"
+      << groups + 1 << ' ' << elements << " 1 " << elements << "\n2 1 2 " << nt << '\n';
   for (std::size_t k = 0; k < nt; ++k) {
     const auto& t = mesh.triangles[k];
     out << k + 1 << ' ' << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
   }
-  if (nl) {
-    out << "1 1 1 " << nl << '\n';
-    for (std::size_t k = 0; k < nl; ++k) out << nt + k + 1 << ' ' << (*mesh.lines)[k][0] + 1 << ' ' << (*mesh.lines)[k][1] + 1 << '\n';
+  std::size_t tag = nt;
+  for (std::size_t g = 0; g < groups; ++g) {
+    const auto lines = mesh.lines_in(static_cast<std::uint32_t>(g));
+    out << "1 " << g + 1 << " 1 " << lines.size() << '\n';
+    for (const auto& l : lines) out << ++tag << ' ' << l[0] + 1 << ' ' << l[1] + 1 << '\n';
   }
   out << "$EndElements\n";
 }
@@ -170,9 +197,10 @@ void write_view(const std::string& path, const MeshView& mesh, std::optional<Mes
         out << "# " << mesh.title << ", " << nt << " triangles\n";
         put_vertices(out, mesh, "v ");
         put_triangles(out, mesh, "f ", 1);
-        if (mesh.lines && !mesh.lines->empty()) {
-          out << "# feature edges\n";
-          for (const auto& l : *mesh.lines) out << "l " << l[0] + 1 << ' ' << l[1] + 1 << '\n';
+        for (std::size_t g = 0; mesh.line_count() && g < mesh.group_names.size(); ++g) {
+          out << "# " << mesh.group_names[g] << '\n';
+          for (const auto& l : mesh.lines_in(static_cast<std::uint32_t>(g)))
+            out << "l " << l[0] + 1 << ' ' << l[1] + 1 << '\n';
         }
         return;
       case MeshFormat::Ply:
@@ -236,16 +264,31 @@ MeshFormat mesh_format_named(const std::string& name) {
 namespace {
 
 MeshView view_of(const TriangleMesh& mesh) {
-  return {in_plane(mesh.vertices), &mesh.vertex_disk, mesh.triangles,
-          "disktune periodic Delaunay mesh: " + std::to_string(mesh.disk_count) + " disks"};
+  MeshView view{in_plane(mesh.vertices), &mesh.vertex_disk, mesh.triangles,
+                "disktune periodic Delaunay mesh: " + std::to_string(mesh.disk_count) + " disks"};
+  view.surface_name = "torus";
+  return view;
 }
 MeshView view_of(const PlanarMesh& mesh) {
-  return {in_plane(mesh.vertices), &mesh.vertex_disk, mesh.triangles,
-          "disktune planar mesh: " + std::to_string(mesh.vertices.size()) + " vertices"};
+  MeshView view{in_plane(mesh.vertices),
+                &mesh.vertex_disk,
+                mesh.triangles,
+                "disktune planar mesh: " + std::to_string(mesh.vertices.size()) + " vertices",
+                &mesh.boundary_edges,
+                &mesh.boundary_loop};
+  view.surface_name = "domain";
+  std::uint32_t loops = 0;
+  for (const std::uint32_t k : mesh.boundary_loop) loops = std::max(loops, k + 1);
+  for (std::uint32_t k = 0; k < loops; ++k)
+    view.group_names.push_back(k == 0 ? "outer boundary" : "hole " + std::to_string(k));
+  return view;
 }
 MeshView view_of(const SurfaceMesh& mesh) {
-  return {mesh.vertices, nullptr, mesh.triangles,
-          "disktune surface mesh: " + std::to_string(mesh.vertices.size()) + " vertices", &mesh.feature_edges};
+  MeshView view{mesh.vertices, nullptr, mesh.triangles,
+                "disktune surface mesh: " + std::to_string(mesh.vertices.size()) + " vertices",
+                &mesh.feature_edges};
+  view.group_names = {"feature edges"};
+  return view;
 }
 
 }  // namespace

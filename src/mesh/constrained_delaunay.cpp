@@ -196,6 +196,13 @@ PlanarMesh constrained_delaunay(const Packing& packing,
   mesh.vertices.reserve(ids.size());
   mesh.vertex_disk = ids;
   for (const DiskId id : ids) mesh.vertices.push_back(packing.center(id));
+  for (std::size_t k = 0; k < loops.size(); ++k) {
+    for (std::size_t i = 0; i < loops[k].size(); ++i) {
+      mesh.boundary_edges.push_back(
+          {index_of[loops[k][i]], index_of[loops[k][(i + 1) % loops[k].size()]]});
+      mesh.boundary_loop.push_back(static_cast<std::uint32_t>(k));
+    }
+  }
   if (cdt.dimension() < 2) return mesh;  // all centers on one line: no triangles
   mark_levels(cdt);
   mesh.triangles.reserve(2 * ids.size());

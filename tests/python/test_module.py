@@ -297,6 +297,13 @@ def test_meshes_write_themselves_in_the_librarys_formats(tmp_path):
     lines = open(tmp_path / "p.obj").read().split("\n")
     assert sum(line.startswith("v ") for line in lines) == len(planar.points)
     assert sum(line.startswith("f ") for line in lines) == len(planar.triangles)
+    holed = disktune.PlanarDomain(square(0, 1), [square(0.3, 0.6)])
+    holed_packing = disktune.sample(radius=0.1, domain=holed, seed=2)
+    disktune.mesh(holed_packing).write(str(tmp_path / "h.msh"))  # loops as named physical groups
+    back = meshio.read(str(tmp_path / "h.msh"))
+    assert set(back.field_data) == {"domain", "outer boundary", "hole 1"}
+    lines = sum(len(c.data) for c in back.cells if c.type == "line")
+    assert lines == holed_packing.fixed.sum()  # an edge from each boundary disk to the next
     with pytest.raises(disktune.IoError):
         m.write(str(tmp_path / "no" / "such" / "e.off"))
     with pytest.raises(disktune.InvalidInput):
