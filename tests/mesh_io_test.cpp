@@ -192,15 +192,22 @@ TEST(MeshIo, VtuHoldsPointsCellsLinesAndDiskIds) {
   for (std::size_t i = 0; i < ids.size(); ++i) EXPECT_EQ(ids[i], m.vertex_disk[i]);
 }
 
+// Gmsh, quiet, for the life of a test.
+struct GmshSession {
+  GmshSession() {
+    gmsh::initialize(0, nullptr, false);
+    gmsh::option::setNumber("General.Terminal", 0);
+  }
+  ~GmshSession() { gmsh::finalize(); }
+  GmshSession(const GmshSession&) = delete;
+  GmshSession& operator=(const GmshSession&) = delete;
+};
+
 TEST(MeshIo, GmshReadsTheMshBack) {
   TempDir dir;
   const SurfaceMesh tetra = tetrahedron();
   write_surface_mesh(dir.file("t.msh"), tetra);
-  gmsh::initialize(0, nullptr, false);
-  gmsh::option::setNumber("General.Terminal", 0);
-  struct Finalize {
-    ~Finalize() { gmsh::finalize(); }
-  } finalize;
+  const GmshSession gmsh_session;
   ASSERT_NO_THROW(gmsh::open(dir.file("t.msh")));
   std::vector<std::size_t> tags;
   std::vector<double> xyz, parametric;
@@ -241,11 +248,7 @@ TEST(MeshIo, GmshFindsThePlanarBoundaryLoopsByName) {
   const BoundaryLoops loops = boundary_loops(packing, *domain);
   const PlanarMesh mesh = constrained_delaunay(packing, loops);
   write_mesh(dir.file("p.msh"), mesh);
-  gmsh::initialize(0, nullptr, false);
-  gmsh::option::setNumber("General.Terminal", 0);
-  struct Finalize {
-    ~Finalize() { gmsh::finalize(); }
-  } finalize;
+  const GmshSession gmsh_session;
   ASSERT_NO_THROW(gmsh::open(dir.file("p.msh")));
   std::vector<DiskId> disk_of_node(mesh.vertex_disk);  // node k + 1 is vertex k
   const char* names[] = {"outer boundary", "hole 1", "hole 2"};

@@ -6,10 +6,12 @@
 // not included here (they need those libraries): disktune/cgal/*.h, disktune/openmesh/*.h.
 #pragma once
 
+#include "disktune/bond_order.h"
 #include "disktune/boundary.h"
 #include "disktune/cvt_reference.h"
 #include "disktune/density.h"
 #include "disktune/errors.h"
+#include "disktune/fiber_statistics.h"
 #include "disktune/frame.h"
 #include "disktune/geometry.h"
 #include "disktune/io.h"
@@ -22,12 +24,11 @@
 #include "disktune/quality_json.h"
 #include "disktune/random.h"
 #include "disktune/remesh.h"
-#include "disktune/fiber_statistics.h"
-#include "disktune/rve.h"
-#include "disktune/rve_mesh.h"
 #include "disktune/report_pictures.h"
 #include "disktune/resources.h"
 #include "disktune/restricted_delaunay.h"
+#include "disktune/rve.h"
+#include "disktune/rve_mesh.h"
 #include "disktune/sampling.h"
 #include "disktune/sizing.h"
 #include "disktune/spatial_grid.h"
