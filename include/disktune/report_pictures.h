@@ -24,6 +24,10 @@ namespace disktune {
 /// `dir` is not an existing folder (nothing written) or a file cannot be written.
 void write_report_pictures(const std::string& dir, const QualityReport& report,
                            const Spectrum* spectrum = nullptr, const Packing* packing = nullptr);
+/// The same for a planar domain's report: angles.png and edges.png (over all triangles)
+/// and orientation.png of the packing measured (its frame 800 pixels across).
+void write_report_pictures(const std::string& dir, const PlanarQualityReport& report,
+                           const Packing& packing);
 
 /// Writes into the existing folder `dir`: cell.png (the cell, 800 pixels across its width,
 /// fiber i a blue disk of diameter diameters[i], those cut by a side completed by their

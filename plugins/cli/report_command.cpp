@@ -54,14 +54,11 @@ void say_order(const BondOrder& o) {
 // A planar domain: the constrained Delaunay mesh, its triangles measured all together,
 // inside and along the boundary (no spectrum: it needs the periodic box).
 int run_planar_report(const ReportArgs& args, const CommandDomain& domain) {
-  if (!args.png_dir.empty()) {
-    throw InvalidInput("--png-dir: the PNG pictures (spectrum, histograms) are made for the "
-                       "periodic box only; use --json and --svg for a planar domain");
-  }
   Packing packing = domain.read(args.input, false);
   const PlanarMesh mesh = constrained_delaunay(packing, boundary_loops(packing, *domain.planar));
   const PlanarQualityReport q = measure_planar_quality(packing, mesh, domain.area());
   if (!args.json.empty()) write_json(args.json, quality_json(q));
+  if (!args.png_dir.empty()) write_report_pictures(args.png_dir, q, packing);
   if (!args.svg.empty()) write_mesh_svg(args.svg, mesh, packing);
   say(
       "report: %zu disks (%zu on the boundary), eta = %.4f, rho = %.4f, %s, %s, distance >= "

@@ -128,11 +128,12 @@ Raster histogram_plot(const Histogram& h, PlotText text) {
   return std::move(plot.raster());
 }
 
-// Disks in a periodic cell, 800 pixels across: a pixel takes disk i's color when its
-// center lies in that disk (or one of its periodic images), found from the disks whose
-// box covers the pixel's row.
+// Disks in a w x h cell, 800 pixels across: a pixel takes disk i's color when its
+// center lies in that disk (or, in a periodic cell, one of its periodic images), found
+// from the disks whose box covers the pixel's row.
 Raster disks_image(double w, double h, const std::vector<Vec2>& centers,
-                   const std::vector<double>& radii, const std::vector<Rgb>& colors) {
+                   const std::vector<double>& radii, const std::vector<Rgb>& colors,
+                   bool periodic = true) {
   constexpr int kCellWidth = 800;
   const double scale = kCellWidth / w;
   const int height = std::max(1, static_cast<int>(std::lround(h * scale)));
@@ -142,6 +143,7 @@ Raster disks_image(double w, double h, const std::vector<Vec2>& centers,
     const double radius = radii[i];
     for (const double dx : {-w, 0.0, w}) {
       for (const double dy : {-h, 0.0, h}) {
+        if (!periodic && (dx != 0 || dy != 0)) continue;
         const double cx = c.x + dx, cy = c.y + dy;
         if (cx + radius < 0 || cx - radius > w || cy + radius < 0 || cy - radius > h) continue;
         const int y0 = std::max(0, static_cast<int>(std::floor((h - cy - radius) * scale)));
@@ -200,13 +202,14 @@ Raster orientation_image(const Packing& packing, const BondOrder& order) {
   std::vector<double> radii;
   std::vector<Rgb> colors;
   const std::vector<DiskId> ids = packing.ids();
+  const Frame& frame = packing.frame();
   for (std::size_t i = 0; i < ids.size(); ++i) {
-    centers.push_back(packing.frame().wrap(packing.center(ids[i])) - packing.frame().origin);
+    centers.push_back(frame.wrap(packing.center(ids[i])) - frame.origin);
     radii.push_back(packing.radius(ids[i]) / 2);
     colors.push_back(order.local[i] > kHexagonalPsi6 ? orientation_color(order.orientation[i])
                                                      : Rgb{205, 205, 205});
   }
-  return disks_image(packing.frame().extent.x, packing.frame().extent.y, centers, radii, colors);
+  return disks_image(frame.extent.x, frame.extent.y, centers, radii, colors, frame.periodic);
 }
 
 Raster curves_plot(const FiberStatistics& stats, const FiberStatistics* sample, double reference,
@@ -265,6 +268,23 @@ void check_picture_folder(const std::string& dir) {
     throw IoError("the picture folder '" + dir + "' does not exist: create it first (mkdir -p " +
                   dir + ") or name another folder");
   }
+}
+
+void write_report_pictures(const std::string& dir, const PlanarQualityReport& report,
+                           const Packing& packing) {
+  check_picture_folder(dir);
+  std::vector<std::pair<std::string, Raster>> pictures;
+  if (report.order.count == packing.size())
+    pictures.emplace_back("orientation.png", orientation_image(packing, report.order));
+  pictures.emplace_back(
+      "angles.png",
+      histogram_plot(report.all.angles.histogram, {"Angles of the constrained Delaunay triangles",
+                                                   "angle (degrees)", "angles"}));
+  pictures.emplace_back("edges.png",
+                        histogram_plot(report.all.edges.histogram,
+                                       {"Edge lengths of the constrained Delaunay triangles",
+                                        "length / r (the mean radius of its ends)", "edges"}));
+  for (const auto& [name, raster] : pictures) detail::write_png(dir + "/" + name, raster);
 }
 
 void write_report_pictures(const std::string& dir, const QualityReport& report,
