@@ -514,7 +514,10 @@ absent surface-svg-output never.csv
 absent surface-svg-picture never.svg
 expect surface-report-svg 2 "draws the plane" -- "$bin" report e4.csv --domain "$eight" --radius 0.045 --json never.json --svg never.svg
 absent surface-report-svg-output never.json
-expect surface-report-png 2 "periodic box only" -- "$bin" report e4.csv --domain "$eight" --radius 0.045 --png-dir pics
+mkdir surface-pics
+expect surface-report-png 0 "^report: " -- "$bin" report e4.csv --domain "$eight" --radius 0.045 --png-dir surface-pics
+[ "$(ls surface-pics | tr '\n' ' ')" = "angles.png edges.png surface.png " ] && head -c 8 surface-pics/surface.png | grep -q PNG &&
+  pass=$((pass + 1)) || { echo "FAIL surface pictures"; ls surface-pics; fails=$((fails + 1)); }
 expect surface-angle 2 "angle injection triangulates" -- "$bin" tune --domain "$eight" --radius 0.045 --input e.csv --target-count 420 --method angle --output never.csv
 expect surface-crystal 0 "reached.*phase crystal ejection" -- "$bin" tune --domain "$eight" --radius 0.045 --input e.csv --target-fraction 0.5 --method crystal-eject
 absent surface-angle-output never.csv

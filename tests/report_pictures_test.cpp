@@ -15,10 +15,11 @@
 #include <set>
 #include <vector>
 
+#include "../src/io/spectrum_layout.h"
 #include "disktune/errors.h"
 #include "disktune/rve.h"
-#include "../src/io/spectrum_layout.h"
 #include "disktune/sampling.h"
+#include "disktune/surface_mesh.h"
 #include "test_util.h"
 
 namespace disktune {
@@ -167,6 +168,43 @@ TEST(ReportPictures, FiberPicturesShowTheFibersWhereTheyAre) {
   }
   EXPECT_EQ(wrong, 0u);
   EXPECT_NEAR(double(blue) / (800.0 * 400.0), rve.fiber_fraction, 0.01);
+}
+
+// The surface picture: an octahedron's equilateral triangles are green, a thin
+// triangle's red; the histograms are there too.
+TEST(ReportPictures, TheSurfaceIsColoredByEachTrianglesSmallestAngle) {
+  SurfaceMesh octahedron;
+  octahedron.vertices = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+  octahedron.triangles = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4},
+                          {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
+  // Red or green pixels above the color bar (the picture's last 60 rows).
+  const auto count = [](const Decoded& d, bool want_red) {
+    std::size_t n = 0;
+    for (std::size_t i = 0; i + 2 < std::size_t{d.width} * (d.height - 60) * 3; i += 3) {
+      const int r = d.rgb[i], g = d.rgb[i + 1];
+      n += want_red ? r > g + 60 : g > r + 60;
+    }
+    return n;
+  };
+  TempDir dir;
+  write_report_pictures(dir.path.string(),
+                        measure_surface_mesh(octahedron, std::vector<double>(6, 1.0)), octahedron);
+  const Decoded d = decode(dir.path / "surface.png");
+  EXPECT_EQ(d.width, 800u);
+  EXPECT_GT(count(d, false), 100000u);  // the octahedron fills much of the picture, green
+  EXPECT_EQ(count(d, true), 0u);
+  EXPECT_GT(dark_pixels(d, 200, 0, 600, 40), 40u) << "title";
+  for (const char* name : {"angles.png", "edges.png"})
+    EXPECT_GE(distinct_colors(decode(dir.path / name)), 3u) << name;
+
+  SurfaceMesh sliver;  // smallest angle about 11 degrees
+  sliver.vertices = {{0, 0, 0}, {1, 0, 0}, {0.5, 0.1, 0}};
+  sliver.triangles = {{0, 1, 2}};
+  TempDir thin;
+  write_report_pictures(thin.path.string(),
+                        measure_surface_mesh(sliver, std::vector<double>(3, 1.0)), sliver);
+  EXPECT_GT(count(decode(thin.path / "surface.png"), true), 10000u);
+  EXPECT_EQ(count(decode(thin.path / "surface.png"), false), 0u);
 }
 
 TEST(ReportPictures, RefusesAMissingFolder) {

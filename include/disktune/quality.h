@@ -124,6 +124,9 @@ struct SurfaceMeshQuality {
 /// triangles, a triangle naming a missing vertex, or a radius count that differs from
 /// the vertex count.
 SurfaceMeshQuality measure_surface_mesh(const SurfaceMesh& mesh, const std::vector<double>& vertex_radius);
+/// Each triangle's smallest angle, in degrees (triangles naming missing vertices are the
+/// caller's to avoid: measure_surface_mesh checks them).
+std::vector<double> smallest_angles(const SurfaceMesh& mesh);
 
 /// Measures `packing`, whose disks all have radius `r`, and its periodic Delaunay mesh
 /// (from periodic_delaunay(packing)); distances are relative to r. Throws InvalidInput

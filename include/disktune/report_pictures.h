@@ -28,6 +28,12 @@ void write_report_pictures(const std::string& dir, const QualityReport& report,
 /// and orientation.png of the packing measured (its frame 800 pixels across).
 void write_report_pictures(const std::string& dir, const PlanarQualityReport& report,
                            const Packing& packing);
+/// The same for a surface mesh: surface.png (the mesh seen from the direction (1, 1, 1),
+/// 800 pixels across, each triangle shaded and colored by its smallest angle, red at 30
+/// degrees or less through yellow to green at 60, with a color bar), angles.png and
+/// edges.png.
+void write_report_pictures(const std::string& dir, const SurfaceMeshQuality& quality,
+                           const SurfaceMesh& mesh);
 
 /// Writes into the existing folder `dir`: cell.png (the cell, 800 pixels across its width,
 /// fiber i a blue disk of diameter diameters[i], those cut by a side completed by their

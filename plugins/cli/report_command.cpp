@@ -139,9 +139,10 @@ void add_report_command(CLI::App& app, Action& action) {
   writes_file(cmd->add_option("--json", args->json, "Write the full report (with histograms) as JSON"));
   writes_file(cmd->add_option("--svg", args->svg, "Draw the mesh over the disks (at r/2) as an SVG picture"));
   cmd->add_option("--png-dir", args->png_dir,
-                  "Write spectrum.png, radial_mean.png, anisotropy.png, angles.png, edges.png and "
-                  "orientation.png (disks colored by their lattice orientation where locally "
-                  "hexagonal) into this existing folder");
+                  "Write angles.png, edges.png and, in the plane, orientation.png (disks colored "
+                  "by their lattice orientation where locally hexagonal), in the periodic box "
+                  "spectrum.png, radial_mean.png and anisotropy.png, on a surface surface.png "
+                  "(the mesh colored by each triangle's smallest angle) into this existing folder");
   cmd->add_flag("--no-spectrum", args->no_spectrum, "Skip the spectrum (seconds for 1e5 disks)");
   cmd->add_option("--spectrum-window", args->spectrum_window,
                   "Spectrum frequencies |kx|, |ky| < K (default: reach normalised frequency 3, "

@@ -19,6 +19,7 @@
 #include "disktune/quality.h"
 #include "disktune/quality_json.h"
 #include "disktune/remesh.h"
+#include "disktune/report_pictures.h"
 #include "disktune/restricted_delaunay.h"
 #include "disktune/surface_io.h"
 #include "disktune/surface_mesh.h"
@@ -258,11 +259,7 @@ int run_surface_report(const SurfaceReportJob& job) {
         "domain); on a surface write the mesh with 'disktune mesh' (.off, .obj, .ply, "
         ".vtk, .vtu, .msh, .stl) and use --json for the measures");
   }
-  if (!job.png_dir.empty()) {
-    throw InvalidInput(
-        "report --png-dir: the PNG pictures (spectrum, histograms) are made for the "
-        "periodic box only; use --json for a surface (its histograms are in it)");
-  }
+  if (!job.png_dir.empty()) check_picture_folder(job.png_dir);
   if (job.spectrum_window != 0) {
     throw InvalidInput(
         "report --spectrum-window: the spectrum needs the periodic box; a surface "
@@ -290,6 +287,7 @@ int run_surface_report(const SurfaceReportJob& job) {
     const std::string text = j.str();
     write_json(job.json, text);
   }
+  if (!job.png_dir.empty()) write_report_pictures(job.png_dir, q, m.mesh);
   say(
       "report: %zu disks%s, eta = %.4f, rho = %.4f, %s, %s; mesh: %zu vertices, %zu triangles, "
       "%s, angles %.2f..%.2f deg (mean |a-60| %.2f), beta <= %.4f, Hausdorff %.4g%s%s\n",

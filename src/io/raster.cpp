@@ -75,6 +75,18 @@ void Raster::polyline(const std::vector<std::array<double, 2>>& points, Rgb c, d
   cairo_set_dash(cr_, dash, 0, 0);
 }
 
+void Raster::fill_polygon(const std::vector<std::array<double, 2>>& points, Rgb c) {
+  if (points.size() < 3) return;
+  cairo_move_to(cr_, points[0][0], points[0][1]);
+  for (std::size_t i = 1; i < points.size(); ++i) cairo_line_to(cr_, points[i][0], points[i][1]);
+  cairo_close_path(cr_);
+  set_color(cr_, c);
+  cairo_fill_preserve(cr_);
+  cairo_set_line_width(cr_, 0.5);
+  cairo_set_line_join(cr_, CAIRO_LINE_JOIN_ROUND);
+  cairo_stroke(cr_);
+}
+
 void Raster::clip(double x0, double y0, double x1, double y1) {
   cairo_reset_clip(cr_);
   cairo_rectangle(cr_, x0, y0, x1 - x0, y1 - y0);

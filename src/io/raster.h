@@ -35,6 +35,9 @@ class Raster {
   void fill_rect(int x0, int y0, int x1, int y1, Rgb c);
   /// An antialiased line (pixel centers at .5), `width` pixels wide, dashed if asked.
   void line(double x0, double y0, double x1, double y1, Rgb c, double width = 1, bool dashed = false);
+  /// A filled polygon through points given in pixels, its outline drawn in the same
+  /// color half a pixel wide so that polygons sharing an edge leave no seam.
+  void fill_polygon(const std::vector<std::array<double, 2>>& points, Rgb c);
   /// Line segments through points given in pixels.
   void polyline(const std::vector<std::array<double, 2>>& points, Rgb c, double width = 1.5, bool dashed = false);
   /// Drawing limited to a rectangle until unclip().

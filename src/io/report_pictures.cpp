@@ -270,6 +270,88 @@ void check_picture_folder(const std::string& dir) {
   }
 }
 
+namespace {
+
+// A color from red (t = 0) through yellow to green (t = 1), scaled by `light`.
+Rgb red_to_green(double t, double light) {
+  t = std::clamp(t, 0.0, 1.0);
+  const double r = t < 0.5 ? 1.0 : 2 * (1 - t), g = t < 0.5 ? 2 * t : 1.0, b = 0.15;
+  const auto level = [&](double v) {
+    return static_cast<std::uint8_t>(std::lround(255 * v * light));
+  };
+  return {level(r * 0.9 + 0.05), level(g * 0.8 + 0.1), level(b)};
+}
+
+// The surface mesh seen from the direction (1, 1, 1) (y up on the picture), drawn far
+// triangles first, each shaded by how squarely it faces that way and colored by its
+// smallest angle: 30 degrees (the bound a one-radius maximal packing guarantees) and
+// below red, through yellow at 45, to green at 60 (equilateral).
+Raster surface_image(const SurfaceMesh& mesh) {
+  constexpr int kWidth = 800, kTop = 40, kBottom = 50, kMargin = 20;
+  const double s3 = 1 / std::sqrt(3.0), s2 = 1 / std::sqrt(2.0), s6 = 1 / std::sqrt(6.0);
+  const Vec3 toward{s3, s3, s3}, right{s2, 0, -s2}, up{-s6, 2 * s6, -s6};
+  std::vector<std::array<double, 2>> at(mesh.vertices.size());
+  double lo_x = 1e300, hi_x = -1e300, lo_y = 1e300, hi_y = -1e300;
+  for (std::size_t i = 0; i < at.size(); ++i) {
+    at[i] = {dot(mesh.vertices[i], right), dot(mesh.vertices[i], up)};
+    lo_x = std::min(lo_x, at[i][0]), hi_x = std::max(hi_x, at[i][0]);
+    lo_y = std::min(lo_y, at[i][1]), hi_y = std::max(hi_y, at[i][1]);
+  }
+  const double span_x = std::max(hi_x - lo_x, 1e-300), span_y = std::max(hi_y - lo_y, 1e-300);
+  const double scale =
+      std::min((kWidth - 2.0 * kMargin) / span_x, (kWidth - 2.0 * kMargin) / span_y);
+  const int height = kTop + kBottom + 2 * kMargin + static_cast<int>(std::ceil(span_y * scale));
+  Raster r(kWidth, height, kWhiteBg);
+  const double x0 = (kWidth - span_x * scale) / 2;
+  const auto pixel = [&](std::uint32_t v) {
+    return std::array<double, 2>{x0 + (at[v][0] - lo_x) * scale,
+                                 kTop + kMargin + (hi_y - at[v][1]) * scale};
+  };
+  const std::vector<double> smallest = smallest_angles(mesh);
+  std::vector<std::pair<double, std::size_t>> order;  // depth toward the viewer, triangle
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const auto& tri = mesh.triangles[t];
+    order.push_back(
+        {dot(mesh.vertices[tri[0]] + mesh.vertices[tri[1]] + mesh.vertices[tri[2]], toward), t});
+  }
+  std::sort(order.begin(), order.end());
+  for (const auto& [depth, t] : order) {
+    const auto& tri = mesh.triangles[t];
+    const Vec3 n = cross(mesh.vertices[tri[1]] - mesh.vertices[tri[0]],
+                         mesh.vertices[tri[2]] - mesh.vertices[tri[0]]);
+    const double facing = norm(n) > 0 ? std::fabs(dot(n, toward)) / norm(n) : 0;
+    r.fill_polygon({pixel(tri[0]), pixel(tri[1]), pixel(tri[2])},
+                   red_to_green((smallest[t] - 30) / 30, 0.35 + 0.65 * facing));
+  }
+  r.text(kWidth / 2.0, 26, "Triangles by their smallest angle", 15, kBlack, Raster::Align::center);
+  // The color bar: 30 to 60 degrees.
+  const int bar_y = height - 38, bar_x = kWidth / 2 - 150;
+  for (int k = 0; k < 300; ++k)
+    r.fill_rect(bar_x + k, bar_y, bar_x + k, bar_y + 10, red_to_green(k / 299.0, 1));
+  r.text(bar_x - 8, bar_y + 10, "30 deg or less", 12, kBlack, Raster::Align::right);
+  r.text(bar_x + 308, bar_y + 10, "60 deg", 12, kBlack);
+  r.text(kWidth / 2.0, bar_y + 28, "smallest angle of the triangle", 12, kBlack,
+         Raster::Align::center);
+  return r;
+}
+
+}  // namespace
+
+void write_report_pictures(const std::string& dir, const SurfaceMeshQuality& quality,
+                           const SurfaceMesh& mesh) {
+  check_picture_folder(dir);
+  std::vector<std::pair<std::string, Raster>> pictures;
+  pictures.emplace_back("surface.png", surface_image(mesh));
+  pictures.emplace_back("angles.png", histogram_plot(quality.angles.histogram,
+                                                     {"Angles of the restricted Delaunay triangles",
+                                                      "angle (degrees)", "angles"}));
+  pictures.emplace_back("edges.png",
+                        histogram_plot(quality.edges.histogram,
+                                       {"Edge lengths of the restricted Delaunay triangles",
+                                        "length / r (the mean radius of its ends)", "edges"}));
+  for (const auto& [name, raster] : pictures) detail::write_png(dir + "/" + name, raster);
+}
+
 void write_report_pictures(const std::string& dir, const PlanarQualityReport& report,
                            const Packing& packing) {
   check_picture_folder(dir);
