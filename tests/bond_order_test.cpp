@@ -131,26 +131,31 @@ TEST(BondOrder, TheSquareLatticeHasNoHexagonalDiskAndNoGrain) {
   EXPECT_EQ(o.grain_share, 0);
 }
 
-TEST(BondOrder, MaximalSamplesMatchTheBruteForceOverSeeds) {
+// f(sample, box, rng) for the maximal samples of the unit periodic square at r = 0.04
+// of seeds 1..seeds, rng as the sample left it.
+template <class F>
+void for_samples(std::uint64_t seeds, F&& f) {
   const PeriodicBox box(1, 1);
-  for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+  for (std::uint64_t seed = 1; seed <= seeds; ++seed) {
     SCOPED_TRACE(seed);
     Rng rng(seed);
-    const Packing p = sample_mps(box, 0.04, rng);
+    Packing p = sample_mps(box, 0.04, rng);
+    f(p, box, rng);
+  }
+}
+
+TEST(BondOrder, MaximalSamplesMatchTheBruteForceOverSeeds) {
+  for_samples(4, [](const Packing& p, const PeriodicBox&, Rng&) {
     expect_as_brute_force(p);
     const BondOrder o = bond_order(p);
     EXPECT_LT(o.psi6_global, 0.1);  // no common orientation (about 1/sqrt(N) = 0.045)
     EXPECT_LT(o.hexagonal_share, 0.1);
-  }
+  });
 }
 
 // Crystal injection to eta 0.85 grows hexagonal grains: the brute force agrees on them.
 TEST(BondOrder, CrystalTunedPackingsHaveGrainsAsTheBruteForceFindsThem) {
-  const PeriodicBox box(1, 1);
-  for (std::uint64_t seed = 1; seed <= 2; ++seed) {
-    SCOPED_TRACE(seed);
-    Rng rng(seed);
-    Packing p = sample_mps(box, 0.04, rng);
+  for_samples(2, [](Packing& p, const PeriodicBox& box, Rng& rng) {
     TuneOptions options;
     options.method = Method::crystal_injection;
     ASSERT_TRUE(tune(p, box, Target::area_fraction(0.85), rng, options).reached);
@@ -158,7 +163,7 @@ TEST(BondOrder, CrystalTunedPackingsHaveGrainsAsTheBruteForceFindsThem) {
     EXPECT_GT(o.hexagonal_share, 0.5);
     EXPECT_GE(o.grain_count, 1u);
     expect_as_brute_force(p);
-  }
+  });
 }
 
 TEST(BondOrder, FewerThanSevenDisksAreNotMeasured) {
