@@ -465,6 +465,11 @@ grep -q "^l [0-9]* [0-9]*$" re.obj && pass=$((pass + 1)) || { echo "FAIL remesh 
 grep -q '"vertices": 2000,' re.json && grep -q '"relax_sweeps": 30' re.json && grep -q '"manifold": true' re.json &&
   pass=$((pass + 1)) || { echo "FAIL remesh json"; fails=$((fails + 1)); }
 expect remesh-off 0 "^remesh: 1500 vertices \(as asked\), .*genus 2 \(input genus 2\)" -- "$bin" remesh "$data/surfaces/eight.off" -n 1500 -o re.off --features none --relax 5 --seed 7
+mkdir remesh-pics
+expect remesh-png 0 "^remesh: 800 vertices \(as asked\)" -- "$bin" remesh "$data/surfaces/eight.off" -n 800 -o re-png.off --relax 2 --png-dir remesh-pics
+[ "$(ls remesh-pics | tr '\n' ' ')" = "angles.png edges.png surface.png " ] && pass=$((pass + 1)) || { echo "FAIL remesh pictures"; ls remesh-pics; fails=$((fails + 1)); }
+expect remesh-png-missing-folder 3 "picture folder 'nopics' does not exist" -- "$bin" remesh "$data/surfaces/eight.off" -n 800 -o never.off --png-dir nopics
+absent remesh-png-missing-folder-output never.off
 [ "$(sed -n 2p re.off | cut -d' ' -f1)" = 1500 ] && pass=$((pass + 1)) || { echo "FAIL remesh OFF vertex count"; fails=$((fails + 1)); }
 # At 700 vertices fandisk's radius is too coarse for the gap under its ledge: seed 3's
 # one-radius mesh has edges in three triangles, so remesh meshes again with smaller radii

@@ -145,7 +145,7 @@ int run_surface_report(const SurfaceReportJob& job);
 /// `disktune remesh`: a surface file in, a mesh of it with exactly `vertices` vertices
 /// out (remesh.h), its summary line, and optionally a JSON report.
 struct RemeshJob {
-  std::string input, output, json;
+  std::string input, output, json, png_dir;
   std::string format;  // --format: empty for the output's extension
   std::size_t vertices = 0;
   std::string features = "60";

@@ -306,6 +306,7 @@ int run_surface_remesh(const RemeshJob& job) {
   const MeshFormat format = output_mesh_format(job.output, job.format);  // before any work
   check_output_folder(job.output);
   if (!job.json.empty()) check_output_folder(job.json);
+  if (!job.png_dir.empty()) check_picture_folder(job.png_dir);
   DomainArgs args;
   args.kind = job.input;
   args.features = job.features;
@@ -353,6 +354,8 @@ int run_surface_remesh(const RemeshJob& job) {
     const std::string text = j.str();
     write_json(job.json, text);
   }
+  if (!job.png_dir.empty() && !result.mesh.triangles.empty())
+    write_report_pictures(job.png_dir, q, result.mesh);
   say(
       "remesh: %zu vertices (%s), %zu triangles, %zu edges along feature curves, %s, angles %.2f..%.2f deg, "
       "%.1f %% in [50,70], %.2f %% obtuse triangles, Hausdorff %.4g, r = %.6g, %.3f s -> %s%s%s\n",
