@@ -44,6 +44,14 @@ void check_angles(const FeatureOptions& o, bool need_angle) {
   }
 }
 
+// 1 for each vertex on an open boundary.
+std::vector<char> vertices_on_boundary(const SurfaceDomain& d) {
+  std::vector<char> on(d.vertices().size(), 0);
+  for (const auto& loop : d.boundary_loops())
+    for (const std::size_t v : loop) on[v] = 1;
+  return on;
+}
+
 // `edges` less the groups (connected through shared vertices) that have a loose end and
 // are shorter than o.stray_length times the bounding-box diagonal.
 std::vector<MeshEdge> without_stray_folds(const SurfaceDomain& d, std::vector<MeshEdge> edges,
@@ -56,9 +64,7 @@ std::vector<MeshEdge> without_stray_folds(const SurfaceDomain& d, std::vector<Me
     ++edges_at[e[0]], ++edges_at[e[1]];
     groups.unite(e[0], e[1]);
   }
-  std::vector<char> on_boundary(n, 0);
-  for (const auto& loop : d.boundary_loops())
-    for (const std::size_t v : loop) on_boundary[v] = 1;
+  const std::vector<char> on_boundary = vertices_on_boundary(d);
   std::vector<double> length(n, 0);
   std::vector<char> loose(n, 0);
   for (const MeshEdge& e : edges) {
@@ -85,9 +91,7 @@ SurfaceFeatures chain(const SurfaceDomain& d, std::vector<MeshEdge> edges, const
   std::vector<std::vector<std::size_t>> at(n);
   for (std::size_t e = 0; e < f.edges.size(); ++e)
     for (const std::size_t v : f.edges[e]) at[v].push_back(e);
-  std::vector<char> on_boundary(n, 0);
-  for (const auto& loop : d.boundary_loops())
-    for (const std::size_t v : loop) on_boundary[v] = 1;
+  const std::vector<char> on_boundary = vertices_on_boundary(d);
   const auto other = [&](std::size_t e, std::size_t v) { return f.edges[e][0] == v ? f.edges[e][1] : f.edges[e][0]; };
   std::vector<char> corner(n, 0);
   const double straight = std::cos(o.corner_angle * kDegree);
