@@ -335,20 +335,30 @@ Raster surface_image(const SurfaceMesh& mesh) {
   return r;
 }
 
+using Pictures = std::vector<std::pair<std::string, Raster>>;
+
+// angles.png and edges.png of a mesh: `triangles` names them in the titles, `length` is
+// the edge-length axis.
+void add_mesh_histograms(Pictures& pictures, const QualityReport::Angles& angles,
+                         const QualityReport::Edges& edges, const std::string& triangles,
+                         const std::string& length) {
+  pictures.emplace_back(
+      "angles.png", histogram_plot(angles.histogram,
+                                   {"Angles of the " + triangles, "angle (degrees)", "angles"}));
+  pictures.emplace_back(
+      "edges.png",
+      histogram_plot(edges.histogram, {"Edge lengths of the " + triangles, length, "edges"}));
+}
+
 }  // namespace
 
 void write_report_pictures(const std::string& dir, const SurfaceMeshQuality& quality,
                            const SurfaceMesh& mesh) {
   check_picture_folder(dir);
-  std::vector<std::pair<std::string, Raster>> pictures;
+  Pictures pictures;
   pictures.emplace_back("surface.png", surface_image(mesh));
-  pictures.emplace_back("angles.png", histogram_plot(quality.angles.histogram,
-                                                     {"Angles of the restricted Delaunay triangles",
-                                                      "angle (degrees)", "angles"}));
-  pictures.emplace_back("edges.png",
-                        histogram_plot(quality.edges.histogram,
-                                       {"Edge lengths of the restricted Delaunay triangles",
-                                        "length / r (the mean radius of its ends)", "edges"}));
+  add_mesh_histograms(pictures, quality.angles, quality.edges, "restricted Delaunay triangles",
+                      "length / r (the mean radius of its ends)");
   for (const auto& [name, raster] : pictures) detail::write_png(dir + "/" + name, raster);
 }
 
@@ -358,14 +368,8 @@ void write_report_pictures(const std::string& dir, const PlanarQualityReport& re
   std::vector<std::pair<std::string, Raster>> pictures;
   if (report.order.count == packing.size())
     pictures.emplace_back("orientation.png", orientation_image(packing, report.order));
-  pictures.emplace_back(
-      "angles.png",
-      histogram_plot(report.all.angles.histogram, {"Angles of the constrained Delaunay triangles",
-                                                   "angle (degrees)", "angles"}));
-  pictures.emplace_back("edges.png",
-                        histogram_plot(report.all.edges.histogram,
-                                       {"Edge lengths of the constrained Delaunay triangles",
-                                        "length / r (the mean radius of its ends)", "edges"}));
+  add_mesh_histograms(pictures, report.all.angles, report.all.edges,
+                      "constrained Delaunay triangles", "length / r (the mean radius of its ends)");
   for (const auto& [name, raster] : pictures) detail::write_png(dir + "/" + name, raster);
 }
 
@@ -375,10 +379,7 @@ void write_report_pictures(const std::string& dir, const QualityReport& report,
   std::vector<std::pair<std::string, Raster>> pictures;
   if (packing && report.order.count == packing->size())
     pictures.emplace_back("orientation.png", orientation_image(*packing, report.order));
-  pictures.emplace_back("angles.png", histogram_plot(report.angles.histogram,
-                                                     {"Angles of the Delaunay triangles", "angle (degrees)", "angles"}));
-  pictures.emplace_back("edges.png", histogram_plot(report.edges.histogram,
-                                                    {"Edge lengths of the Delaunay triangles", "length / r", "edges"}));
+  add_mesh_histograms(pictures, report.angles, report.edges, "Delaunay triangles", "length / r");
   if (spectrum) {
     pictures.emplace_back("spectrum.png", spectrum_image(*spectrum));
     pictures.emplace_back("radial_mean.png",
