@@ -241,18 +241,15 @@ struct PyMesh {
   std::function<void(const std::string&, const std::optional<std::string>&)> write;
 };
 
-// A writer for one of the library's meshes, kept by value.
-template <class Mesh, class Write, class WriteAs>
-std::function<void(const std::string&, const std::optional<std::string>&)> writer_of(
-    Mesh mesh, Write write, WriteAs write_as) {
+// A writer for one of the library's meshes, kept by value: write(path, mesh, format),
+// the format named or else the path's.
+template <class Mesh, class Write>
+std::function<void(const std::string&, const std::optional<std::string>&)> writer_of(Mesh mesh,
+                                                                                     Write write) {
   auto kept = std::make_shared<const Mesh>(std::move(mesh));
-  return
-      [kept, write, write_as](const std::string& path, const std::optional<std::string>& format) {
-        if (format)
-          write_as(path, *kept, mesh_format_named(*format));
-        else
-          write(path, *kept);
-      };
+  return [kept, write](const std::string& path, const std::optional<std::string>& format) {
+    write(path, *kept, format ? mesh_format_named(*format) : mesh_format_for_path(path));
+  };
 }
 
 py::dict mesh_check_dict(const SurfaceMeshCheck& c) {
@@ -272,11 +269,9 @@ PyMesh surface_mesh_of(const SurfaceMesh& m) {
   std::vector<std::int64_t> disks(m.vertices.size());
   std::iota(disks.begin(), disks.end(), 0);
   out.disks = array_of(disks);
-  out.write = writer_of(
-      m, [](const std::string& path, const SurfaceMesh& k) { write_surface_mesh(path, k); },
-      [](const std::string& path, const SurfaceMesh& k, MeshFormat f) {
-        write_surface_mesh(path, k, f);
-      });
+  out.write = writer_of(m, [](const std::string& path, const SurfaceMesh& k, MeshFormat f) {
+    write_surface_mesh(path, k, f);
+  });
   return out;
 }
 
@@ -301,9 +296,8 @@ PyMesh mesh_of(const PyPacking& packing) {
     }
     for (const DiskId id : m.vertex_disk) disks.push_back(rows.at(id));
     out.points = rows_of(m.vertices), out.triangles = rows_of(m.triangles);
-    out.write = writer_of(
-        std::move(m), [](const std::string& path, const PlanarMesh& k) { write_mesh(path, k); },
-        [](const std::string& path, const PlanarMesh& k, MeshFormat f) { write_mesh(path, k, f); });
+    out.write = writer_of(std::move(m), [](const std::string& path, const PlanarMesh& k,
+                                           MeshFormat f) { write_mesh(path, k, f); });
   } else {
     const auto rows = packing.rows();
     TriangleMesh m;
@@ -313,11 +307,8 @@ PyMesh mesh_of(const PyPacking& packing) {
     }
     for (const DiskId id : m.vertex_disk) disks.push_back(rows.at(id));
     out.points = rows_of(m.vertices), out.triangles = rows_of(m.triangles);
-    out.write = writer_of(
-        std::move(m), [](const std::string& path, const TriangleMesh& k) { write_mesh(path, k); },
-        [](const std::string& path, const TriangleMesh& k, MeshFormat f) {
-          write_mesh(path, k, f);
-        });
+    out.write = writer_of(std::move(m), [](const std::string& path, const TriangleMesh& k,
+                                           MeshFormat f) { write_mesh(path, k, f); });
   }
   out.disks = array_of(disks);
   return out;
