@@ -44,9 +44,8 @@ std::string angle_range(const PlanarMeshQuality& part) {
 // The bond order's line: psi6 and the crystalline grains (nothing under 7 disks).
 void say_order(const BondOrder& o) {
   if (o.count == 0) return;
-  say("order: psi6 %.3f (local mean %.3f), %.1f %% of the disks hexagonal, %zu grains (largest %zu "
-      "disks, "
-      "%.1f %% of all in grains)\n",
+  say("order: psi6 %.3f (local mean %.3f), %.1f %% of the disks hexagonal, "
+      "%zu grains (largest %zu disks, %.1f %% of all in grains)\n",
       o.psi6_global, o.psi6_local_mean, 100 * o.hexagonal_share, o.grain_count, o.largest_grain,
       100 * o.grain_share);
 }
