@@ -250,7 +250,16 @@ struct Space<SurfacePacking> {
   // a step never lands on a sheet across a thin part.
   static bool project(const SurfacePacking& packing, DiskId p, Location y, Point& x) {
     const SurfaceIndex& index = packing.index();
-    const Vec3 n = index.plane(packing.point(p).triangle).normal();
+    const std::uint32_t own = packing.point(p).triangle;
+    // A step along p's own triangle that stays on it (the common case) lands where it
+    // points, up to rounding, and no other triangle is nearer.
+    const Vec3 on_own = index.closest_point(own, y);
+    const double hair = 1e-12 * packing.radius(p);
+    if (squared_norm(on_own - y) <= hair * hair) {
+      x = Point{on_own, own};
+      return true;
+    }
+    const Vec3 n = index.plane(own).normal();
     thread_local std::vector<std::uint32_t> tris;
     index.triangles_near(y, norm(y - packing.center(p)) + 1e-9 * packing.radius(p), tris);
     double best = 1e300;

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "../geometry/triangle_arrangement.h"
+#include "../voids/surface_cell.h"
 #include "disktune/tolerance.h"
 #include "void_repair.h"
 
@@ -44,6 +45,12 @@ bool covers_all(const SurfacePacking& packing, const SurfacePoint& c, const std:
 }
 
 bool covers_lifted_voids(const SurfacePacking& packing, Vec3 c, double R, DiskId p, const SurfacePoint& x) {
+  // Where p's cell lies in its ball at x, it still covers all that only it covered
+  // (surface_cell.h), and no void points are needed: with one radius (with a sizing p's
+  // radius changes on the way) and on p's own patch, by a margin above the rounding.
+  if (packing.sizing().is_constant() && packing.patches_of(x) == packing.patches(p) &&
+      cell_inside(packing, p, x.p, packing.radius(p) * (1 - 1e-7)))
+    return true;
   return void_points_near_within(packing, c, R, {p}, holding_ball(packing, x));
 }
 

@@ -34,8 +34,11 @@ bool covers_all(const SurfacePacking& packing, const SurfacePoint& c, const std:
 /// sizing) on its patches.
 HoldingBall holding_ball(const SurfacePacking& packing, const SurfacePoint& c);
 
-/// covers_all(packing, x, voids_near(packing, c, R, {p})), at a fraction of its cost
-/// (void_points_near_within): whether disk p, moved to x, still holds its own void.
+/// Whether disk p (centered at c), moved to x, still holds its own void: first whether
+/// its cell lies in its ball at x (cell_inside, surface_cell.h), else covers_all(packing,
+/// x, voids_near(packing, c, R, {p})) at a fraction of its cost (void_points_near_within).
+/// The first can say yes where the second, which asks x to cover every void near c, would
+/// not: where the packing already had a void there that p did not cover.
 bool covers_lifted_voids(const SurfacePacking& packing, Vec3 c, double R, DiskId p, const SurfacePoint& x);
 
 /// Positions within R of `near` where a disk covers every void point (covers_all) and

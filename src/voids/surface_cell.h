@@ -1,0 +1,20 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// A disk's restricted Voronoi cell on the surface (internal): the part of the surface
+// nearer to its center than to any other disk that counts there.
+#pragma once
+
+#include "disktune/surface_packing.h"
+
+namespace disktune::detail {
+
+/// Whether the cell of disk p, on the triangles of p's patches that come within its
+/// ball (radius r, with a hair of slack), lies inside the ball of `radius` around x.
+/// Every point that only p covers lies in that cell, since a disk covering it would be
+/// nearer to it than p's center; so where this holds with radius r, p moved to x still
+/// covers all of them. Only the disks within twice p's ball clip the cell, which is
+/// exact inside the ball and larger beyond it, so the answer errs only toward false
+/// (as where a cell needs more than 32 corners); rounding moves the corners by a few
+/// ulps of r, which the caller's radius must leave room for.
+bool cell_inside(const SurfacePacking& packing, DiskId p, Vec3 x, double radius);
+
+}  // namespace disktune::detail
