@@ -318,6 +318,20 @@ expect planar-sample 0 "planar domain hole.poly \(2 boundary loops, area 0.84\)"
 expect planar-tune 0 "reached" -- "$bin" tune --domain hole.poly --radius 0.05 --input p.csv --target-fraction 0.8 --output p8.csv
 expect planar-mesh 0 "constrained Delaunay" -- "$bin" mesh p8.csv --domain hole.poly --radius 0.05 --output p8.off
 expect planar-report 0 "maximal, conflict-free" -- "$bin" report p8.csv --domain hole.poly --radius 0.05 --json p8.json --svg p8.svg
+# Triangle's pair of files: the same vertices and triangles as the OFF file, numbered
+# from 1, boundary vertices marked by loop; never to standard output, never a surface.
+expect planar-triangle 0 "-> p8.node" -- "$bin" mesh p8.csv --domain hole.poly --radius 0.05 --output p8.node
+awk 'NR == 2 {nv = $1; nt = $2} NR > 2 && NR <= 2 + nv {print $1, $2}' p8.off >off-points
+awk 'NR == 2 {n = $1} NR > 2 && NR <= 2 + n {print $2, $3}' p8.node >node-points
+awk 'NR == 2 {nv = $1} NR > 2 + nv {print $2 + 1, $3 + 1, $4 + 1}' p8.off >off-triangles
+awk 'NR > 2 {print $2, $3, $4}' p8.ele >ele-triangles
+cmp -s off-points node-points && cmp -s off-triangles ele-triangles &&
+  [ "$(awk 'NR == 2 {print $2, $3, $4}' p8.node)" = "2 0 1" ] &&
+  awk 'NR > 2 && $4 > 0 {b++} NR > 2 && ($4 < 0 || $4 > 2) {bad++} END {exit !(b > 10 && !bad)}' p8.node &&
+  pass=$((pass + 1)) || { echo "FAIL Triangle .node/.ele against the OFF mesh"; fails=$((fails + 1)); }
+expect planar-triangle-stdout 2 "two files, NAME.node and NAME.ele" -- "$bin" mesh p8.csv --domain hole.poly --radius 0.05 -o - --format triangle
+expect surface-triangle 2 "hold planar meshes, and this one is a surface" -- "$bin" remesh "$data/surfaces/eight.off" -n 500 -o never.node
+absent surface-triangle-nothing never.node
 grep -q '"interior_triangles"' p8.json && grep -q '"boundary_triangles"' p8.json && pass=$((pass + 1)) || { echo "FAIL planar report keys"; fails=$((fails + 1)); }
 expect planar-angle 2 "angle injection" -- "$bin" tune --domain hole.poly --radius 0.05 --input p.csv --target-fraction 0.8 --method angle
 mkdir planar-pics

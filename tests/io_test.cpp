@@ -223,6 +223,22 @@ TEST(OutputTransaction, RenamesEveryOutputTogetherOrNone) {
   EXPECT_EQ(text_of(a), "new a");
   EXPECT_EQ(text_of(b), "new b");
   EXPECT_EQ(files_in(dir.path), 2u);
+  // An output that is a folder is refused when it is written, not at the commit, after
+  // the outputs before it were put in place.
+  fs::create_directory(dir.file("folder"));
+  {
+    OutputTransaction outputs;
+    write_file_atomically(a, [](std::ostream& out) { out << "newest a"; });
+    try {
+      write_file_atomically(dir.file("folder"), [](std::ostream& out) { out << "x"; });
+      ADD_FAILURE() << "a folder was taken as an output";
+    } catch (const IoError& e) {
+      EXPECT_NE(std::string(e.what()).find("is a folder"), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_EQ(text_of(a), "new a");
+  EXPECT_TRUE(fs::is_directory(dir.file("folder")));
+  EXPECT_EQ(files_in(dir.path), 3u);
 }
 
 TEST(AtomicWrite, WritesThroughASymbolicLinkAndKeepsPermissions) {

@@ -7,6 +7,8 @@
 #include <gmsh.h>
 #include <gtest/gtest.h>
 
+#include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -154,40 +156,69 @@ SurfaceMesh tetrahedron() {
   return m;
 }
 
-// The numbers between <DataArray ... Name="name" ...> and </DataArray>.
-std::vector<double> vtu_array(const std::string& text, const std::string& name) {
-  const std::size_t tag = text.find("Name=\"" + name + "\"");
-  EXPECT_NE(tag, std::string::npos) << name;
-  const std::size_t from = text.find('>', tag) + 1, to = text.find("</DataArray>", from);
-  std::istringstream in(text.substr(from, to - from));
-  std::vector<double> out;
-  for (double x; in >> x;) out.push_back(x);
+// Base64 decoded, the test's own way: each digit's six bits, in order, '=' ending it.
+std::string from_base64(const std::string& text) {
+  const std::string digits = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  unsigned bits = 0, held = 0;
+  for (const char c : text) {
+    if (c == '=') break;
+    const std::size_t v = digits.find(c);
+    if (v == std::string::npos) continue;  // line breaks, spaces
+    bits = bits << 6 | static_cast<unsigned>(v), held += 6;
+    if (held >= 8) out += static_cast<char>(bits >> (held - 8) & 0xff), held -= 8;
+  }
   return out;
 }
 
-TEST(MeshIo, VtuHoldsPointsCellsLinesAndDiskIds) {
+// The values of the binary DataArray whose opening tag holds `attribute` (Name="..."):
+// base64 of a UInt64 byte count and the values of its type, as doubles.
+std::vector<double> vtu_array(const std::string& text, const std::string& attribute) {
+  const std::size_t tag = text.find(attribute);
+  EXPECT_NE(tag, std::string::npos) << attribute;
+  const std::size_t open = text.rfind("<DataArray", tag), from = text.find('>', tag) + 1;
+  const std::string head = text.substr(open, from - open);
+  EXPECT_NE(head.find("format=\"binary\""), std::string::npos) << head;
+  const std::string bytes = from_base64(text.substr(from, text.find("</DataArray>", from) - from));
+  std::uint64_t count = 0;
+  EXPECT_GE(bytes.size(), sizeof count);
+  std::memcpy(&count, bytes.data(), sizeof count);
+  EXPECT_EQ(count, bytes.size() - sizeof count) << head;
+  std::vector<double> out;
+  const auto take = [&](auto zero) {
+    for (std::size_t at = sizeof count; at + sizeof zero <= bytes.size(); at += sizeof zero) {
+      std::memcpy(&zero, bytes.data() + at, sizeof zero);
+      out.push_back(static_cast<double>(zero));
+    }
+  };
+  if (head.find("\"Float64\"") != std::string::npos) take(double{});
+  if (head.find("\"Int64\"") != std::string::npos) take(std::int64_t{});
+  if (head.find("\"UInt32\"") != std::string::npos) take(std::uint32_t{});
+  if (head.find("\"UInt8\"") != std::string::npos) take(std::uint8_t{});
+  return out;
+}
+
+TEST(MeshIo, VtuHoldsPointsCellsLinesAndDiskIdsInBase64) {
   TempDir dir;
   const SurfaceMesh tetra = tetrahedron();
   write_surface_mesh(dir.file("t.vtu"), tetra);
   std::ifstream in(dir.file("t.vtu"));
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("header_type=\"UInt64\""), std::string::npos);
   EXPECT_NE(text.find("<Piece NumberOfPoints=\"4\" NumberOfCells=\"6\">"), std::string::npos);
-  const std::size_t from = text.find('>', text.find("NumberOfComponents=\"3\"")) + 1;
-  std::istringstream points(text.substr(from));
-  for (const Vec3& p : tetra.vertices) {
-    double x, y, z;
-    points >> x >> y >> z;
-    EXPECT_EQ((Vec3{x, y, z}), p);
-  }
-  EXPECT_EQ(vtu_array(text, "connectivity"),
+  const std::vector<double> points = vtu_array(text, "NumberOfComponents=\"3\"");
+  ASSERT_EQ(points.size(), 3 * tetra.vertices.size());
+  for (std::size_t k = 0; k < tetra.vertices.size(); ++k)
+    EXPECT_EQ((Vec3{points[3 * k], points[3 * k + 1], points[3 * k + 2]}), tetra.vertices[k]);
+  EXPECT_EQ(vtu_array(text, "Name=\"connectivity\""),
             (std::vector<double>{0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3, 0, 1, 1, 2}));
-  EXPECT_EQ(vtu_array(text, "offsets"), (std::vector<double>{3, 6, 9, 12, 14, 16}));
-  EXPECT_EQ(vtu_array(text, "types"), (std::vector<double>{5, 5, 5, 5, 3, 3}));
+  EXPECT_EQ(vtu_array(text, "Name=\"offsets\""), (std::vector<double>{3, 6, 9, 12, 14, 16}));
+  EXPECT_EQ(vtu_array(text, "Name=\"types\""), (std::vector<double>{5, 5, 5, 5, 3, 3}));
   const TriangleMesh m = small_mesh();
   write_mesh(dir.file("m.vtu"), m);
   std::ifstream in2(dir.file("m.vtu"));
   const std::string periodic((std::istreambuf_iterator<char>(in2)), std::istreambuf_iterator<char>());
-  const std::vector<double> ids = vtu_array(periodic, "disk_id");
+  const std::vector<double> ids = vtu_array(periodic, "Name=\"disk_id\"");
   ASSERT_EQ(ids.size(), m.vertex_disk.size());
   for (std::size_t i = 0; i < ids.size(); ++i) EXPECT_EQ(ids[i], m.vertex_disk[i]);
 }
@@ -275,6 +306,90 @@ TEST(MeshIo, GmshFindsThePlanarBoundaryLoopsByName) {
   std::vector<std::size_t> tags, nodes;
   gmsh::model::mesh::getElementsByType(2, tags, nodes, surfaces[0]);
   EXPECT_EQ(nodes.size(), 3 * mesh.triangles.size());
+}
+
+// Triangle's .node/.ele pair, read back by hand: numbered from 1, every coordinate
+// exact, the triangles as they are, and a vertex's boundary marker 1 + the number of the
+// loop it lies on (found geometrically, on the domain's own segments), 0 inside; the
+// periodic mesh has no boundary. Both files or neither: a failure writing the second
+// leaves no first. A surface, or a path that is not .node/.ele, is refused.
+TEST(MeshIo, TriangleNodeAndEleFilesHoldTheMeshAndItsBoundaryLoops) {
+  TempDir dir;
+  const std::vector<std::vector<Vec2>> loops = {{{0, 0}, {1, 0}, {1, 1}, {0, 1}},
+                                                {{0.2, 0.2}, {0.2, 0.4}, {0.4, 0.4}, {0.4, 0.2}},
+                                                {{0.6, 0.6}, {0.6, 0.8}, {0.8, 0.8}, {0.8, 0.6}}};
+  const auto domain = std::make_shared<const PlanarDomain>(
+      loops[0], std::vector<std::vector<Vec2>>{loops[1], loops[2]});
+  Rng rng(5);
+  Packing packing = sample_mps(domain, 0.05, rng);
+  const PlanarMesh planar = constrained_delaunay(packing, boundary_loops(packing, *domain));
+  const auto loop_of = [&](Vec2 p) -> int {  // 1 + the loop p lies on, else 0
+    for (std::size_t k = 0; k < loops.size(); ++k)
+      for (std::size_t i = 0; i < loops[k].size(); ++i) {
+        const Vec2 a = loops[k][i], b = loops[k][(i + 1) % loops[k].size()];
+        const double t = dot(p - a, b - a) / dot(b - a, b - a);
+        if (t >= -1e-12 && t <= 1 + 1e-12 && squared_norm(a + (b - a) * t - p) < 1e-24)
+          return static_cast<int>(k) + 1;
+      }
+    return 0;
+  };
+  const auto check = [&](const std::vector<Vec2>& vertices,
+                         const std::vector<std::array<std::uint32_t, 3>>& triangles,
+                         const std::string& stem, bool bounded) {
+    SCOPED_TRACE(stem);
+    std::ifstream node(dir.file(stem + ".node")), ele(dir.file(stem + ".ele"));
+    std::string comment;
+    std::getline(node, comment);
+    EXPECT_EQ(comment[0], '#');
+    std::size_t n = 0, dimension = 0, attributes = 0, markers = 0;
+    node >> n >> dimension >> attributes >> markers;
+    ASSERT_EQ(n, vertices.size());
+    EXPECT_EQ(dimension, 2u);
+    EXPECT_EQ(attributes, 0u);
+    EXPECT_EQ(markers, 1u);
+    std::size_t on_loops = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+      std::size_t number = 0;
+      double x = 0, y = 0;
+      int marker = -1;
+      node >> number >> x >> y >> marker;
+      EXPECT_EQ(number, k + 1);
+      EXPECT_EQ((Vec2{x, y}), vertices[k]);
+      EXPECT_EQ(marker, bounded ? loop_of(vertices[k]) : 0) << "vertex " << k + 1;
+      on_loops += marker > 0;
+    }
+    if (bounded) {
+      EXPECT_GT(on_loops, 12u);
+    }
+    std::getline(ele, comment);
+    std::getline(ele, comment);
+    std::size_t nt = 0, corners = 0;
+    std::istringstream(comment) >> nt >> corners >> attributes;
+    ASSERT_EQ(nt, triangles.size());
+    EXPECT_EQ(corners, 3u);
+    for (std::size_t t = 0; t < nt; ++t) {
+      std::size_t number = 0, a = 0, b = 0, c = 0;
+      ele >> number >> a >> b >> c;
+      EXPECT_EQ(number, t + 1);
+      EXPECT_EQ((std::array<std::uint32_t, 3>{std::uint32_t(a - 1), std::uint32_t(b - 1),
+                                              std::uint32_t(c - 1)}),
+                triangles[t]);
+    }
+  };
+  write_mesh(dir.file("planar.node"), planar);
+  check(planar.vertices, planar.triangles, "planar", true);
+  const TriangleMesh periodic = small_mesh();
+  write_mesh(dir.file("torus.ele"), periodic);  // either name gives both files
+  check(periodic.vertices, periodic.triangles, "torus", false);
+
+  fs::create_directory(dir.file("blocked.ele"));  // the second file cannot be written
+  EXPECT_THROW(write_mesh(dir.file("blocked.node"), planar), IoError);
+  EXPECT_FALSE(fs::exists(dir.file("blocked.node")));
+  EXPECT_THROW(write_surface_mesh(dir.file("t.node"), tetrahedron()), InvalidInput);
+  EXPECT_THROW(write_mesh(dir.file("m.off"), planar, MeshFormat::Triangle), InvalidInput);
+  EXPECT_EQ(mesh_format_named("triangle"), MeshFormat::Triangle);
+  EXPECT_FALSE(fs::exists(dir.file("t.node")) || fs::exists(dir.file("t.ele")) ||
+               fs::exists(dir.file("m.off")));
 }
 
 TEST(MeshIo, StlIsBinaryWithUnitNormals) {

@@ -18,7 +18,8 @@ namespace disktune {
 
 /// Writes `path` by calling `write` on a temporary sibling file, then renaming it into
 /// place. Throws IoError (naming the path and the reason) and removes the temporary on
-/// any failure, including an exception thrown by `write`. A path that is a device or a
+/// any failure, including an exception thrown by `write`; a path that is a folder is
+/// refused before anything is written. A path that is a device or a
 /// pipe (/dev/null, a FIFO) is written straight into instead, never replaced; a symbolic
 /// link is written through (its target is replaced, the link stays); an existing file
 /// keeps its permissions. While an OutputTransaction is open on this thread, the
@@ -39,6 +40,9 @@ class OutputTransaction {
   /// Renames every written file into place, in the order written. Throws IoError when a
   /// rename fails (the files renamed before it stay, the others are removed).
   void commit();
+  /// Whether a transaction is open on this thread (a writer of several files opens one
+  /// of its own only where none is).
+  static bool open_here();
 
  private:
   struct Staged {

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Writing a TriangleMesh or PlanarMesh (and, through surface_mesh.h, a SurfaceMesh): ASCII
-// OFF, OBJ, PLY, legacy VTK or VTK XML (.vtu; both unstructured grids: ParaView, VTK and
-// meshio read them), Gmsh MSH 4.1 (ASCII) or binary STL, chosen by the file's extension,
+// OFF, OBJ, PLY, legacy VTK or Gmsh MSH 4.1, VTK XML (.vtu, binary: base64 inline; both
+// VTK files unstructured grids, which ParaView, VTK and meshio read), binary PLY or STL,
+// chosen by the file's extension,
 // and an SVG picture of the mesh over its packing. Every writer goes through
 // write_file_atomically: a failure leaves no partial file.
 #pragma once
@@ -14,14 +15,15 @@
 
 namespace disktune {
 
-enum class MeshFormat { Off, Obj, Ply, PlyBinary, Vtk, Vtu, Msh, Stl };
+enum class MeshFormat { Off, Obj, Ply, PlyBinary, Vtk, Vtu, Msh, Stl, Triangle };
 
-/// The format named by the extension of `path` (.off, .obj, .ply, .vtk, .vtu, .msh, .stl;
-/// any letter case).
+/// The format named by the extension of `path` (.off, .obj, .ply, .vtk, .vtu, .msh, .stl,
+/// and .node or .ele for Triangle's pair of files; any letter case).
 /// Throws InvalidInput, listing the supported extensions, for any other.
 MeshFormat mesh_format_for_path(const std::string& path);
-/// The format called `name`: off, obj, ply, ply-binary (little-endian), vtk, vtu, msh or
-/// stl, for an output whose extension does not say (standard output). Throws
+/// The format called `name`: off, obj, ply, ply-binary (little-endian), vtk, vtu, msh,
+/// stl or triangle, for an output whose extension does not say (standard output; not for
+/// triangle, which is two files). Throws
 /// InvalidInput, listing the names, for any other.
 MeshFormat mesh_format_named(const std::string& name);
 
@@ -31,13 +33,19 @@ MeshFormat mesh_format_named(const std::string& name);
 /// MSH files carry a surface mesh's feature edges and a planar mesh's boundary edges as
 /// lines, which MSH puts in named physical groups ("feature edges"; "outer boundary",
 /// "hole 1", ...; the triangles in "surface", "domain" or "torus"); STL (binary, 32-bit
-/// floats) has no shared vertices, so it keeps only the triangles' shape.
+/// floats) has no shared vertices, so it keeps only the triangles' shape. Triangle's
+/// format (J. R. Shewchuk's mesh generator) is a pair of ASCII files, NAME.node (x y and a
+/// boundary marker: 0 inside, 1 + the loop's number on a planar domain's boundary loop)
+/// and NAME.ele (triangles), numbered from 1, for a planar or periodic mesh; written
+/// together (an OutputTransaction of their own where none is open), from a path ending
+/// in .node or .ele.
 void write_mesh(const std::string& path, const TriangleMesh& mesh);
 void write_mesh(const std::string& path, const TriangleMesh& mesh, MeshFormat format);
 /// The same for a planar mesh; its VTK `disk_id` is kNoDisk for a vertex that is no disk.
 void write_mesh(const std::string& path, const PlanarMesh& mesh);
 void write_mesh(const std::string& path, const PlanarMesh& mesh, MeshFormat format);
-/// write_surface_mesh (surface_mesh.h) in the format given, whatever the extension.
+/// write_surface_mesh (surface_mesh.h) in the format given, whatever the extension (not
+/// Triangle's, which is planar: InvalidInput).
 void write_surface_mesh(const std::string& path, const SurfaceMesh& mesh, MeshFormat format);
 
 struct MeshSvgStyle {

@@ -162,8 +162,10 @@ int run_demo();
 /// costs no minutes of computing before the write fails.
 void check_output_folder(const std::string& path);
 /// The mesh format of an output: --format NAME when given, else the path's extension
-/// (refused, naming --format, when it says none); called before any work.
-MeshFormat output_mesh_format(const std::string& path, const std::string& format);
+/// (refused, naming --format, when it says none); called before any work. Triangle's
+/// pair of files only from a path ending in .node or .ele, and not for a `surface`.
+MeshFormat output_mesh_format(const std::string& path, const std::string& format,
+                              bool surface = false);
 /// --format on a command that writes a mesh.
 void add_format_option(CLI::App* cmd, std::string& format);
 /// After sample or tune without --output: a note on stderr that the `count` disks were

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // `disktune mesh`: the Delaunay mesh of a packing (periodic, or constrained by a planar
-// domain's boundary), as OFF, OBJ, PLY, VTK, VTU, MSH or STL.
+// domain's boundary), as OFF, OBJ, PLY, VTK, VTU, MSH, STL or Triangle's .node/.ele.
 #include <chrono>
 #include <cstdio>
 #include <memory>
@@ -69,9 +69,12 @@ void add_mesh_command(CLI::App& app, Action& action) {
                               "CSV file of the packing (header x,y,r; x,y,z,r on a surface); - for standard input"))
       ->required();
   add_domain_options(cmd, args->domain);
-  writes_file(cmd->add_option("--output,-o", args->output,
-                  "Mesh file to write: .off, .obj, .ply, .vtk (legacy VTK), .vtu (VTK XML), .msh (Gmsh "
-                  "4.1), all ASCII, or .stl (binary), on every domain"))
+  writes_file(
+      cmd->add_option(
+          "--output,-o", args->output,
+          "Mesh file to write: .off, .obj, .ply, .vtk (legacy VTK), .msh (Gmsh 4.1), all ASCII, "
+          ".vtu (VTK XML) or .stl, binary, on every domain; or NAME.node for Triangle's .node and "
+          ".ele pair (planar and periodic meshes)"))
       ->required();
   add_format_option(cmd, args->format);
   cmd->callback([args, &action] { action = [args] { return run_mesh(*args); }; });

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Checks on the files a command will write, made before any work: their folders exist,
 // no two outputs are one file, and no output is a file the command reads.
+#include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <system_error>
@@ -20,19 +21,35 @@ void check_output_folder(const std::string& path) {
   }
 }
 
-MeshFormat output_mesh_format(const std::string& path, const std::string& format) {
-  if (!format.empty()) return mesh_format_named(format);
+MeshFormat output_mesh_format(const std::string& path, const std::string& format, bool surface) {
+  MeshFormat out;
   try {
-    return mesh_format_for_path(path);
+    out = format.empty() ? mesh_format_for_path(path) : mesh_format_named(format);
   } catch (const InvalidInput& e) {
-    throw InvalidInput(std::string(e.what()) + " with --format NAME");
+    throw InvalidInput(std::string(e.what()) + (format.empty() ? " with --format NAME" : ""));
   }
+  if (out != MeshFormat::Triangle) return out;
+  if (surface) {
+    throw InvalidInput(
+        "Triangle's .node/.ele files hold planar meshes, and this one is a surface: write it as "
+        ".off, "
+        ".obj, .ply, .vtk, .vtu, .msh or .stl");
+  }
+  std::string ext = fs::path(path).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (ext != ".node" && ext != ".ele") {
+    throw InvalidInput(
+        "Triangle's mesh format is two files, NAME.node and NAME.ele: give --output NAME.node");
+  }
+  return out;
 }
 
 void add_format_option(CLI::App* cmd, std::string& format) {
-  cmd->add_option("--format", format,
-                  "Mesh format when the output's extension does not say it (standard output, -): off, obj, ply, "
-                  "ply-binary, vtk, vtu, msh or stl");
+  cmd->add_option(
+      "--format", format,
+      "Mesh format when the output's extension does not say it (standard output, -): off, obj, "
+      "ply, "
+      "ply-binary, vtk, vtu, msh, stl (triangle: Triangle's .node/.ele pair, by path only)");
 }
 
 void note_not_written(const std::string& output, std::size_t count) {

@@ -180,7 +180,7 @@ int run_surface_tune(const TuneJob& job) {
 
 int run_surface_mesh(const std::string& input, const DomainArgs& domain_args, const std::string& output,
                      const std::string& format_name) {
-  const MeshFormat format = output_mesh_format(output, format_name);  // before any work
+  const MeshFormat format = output_mesh_format(output, format_name, true);  // before any work
   check_output_folder(output);
   const CommandDomain domain = open_domain(domain_args);
   const SurfacePacking packing = domain.read_surface(input, false);
@@ -303,7 +303,7 @@ int run_surface_report(const SurfaceReportJob& job) {
 
 int run_surface_remesh(const RemeshJob& job) {
   check_files_apart({{"the surface", job.input}}, {{"--output", job.output}, {"--json", job.json}});
-  const MeshFormat format = output_mesh_format(job.output, job.format);  // before any work
+  const MeshFormat format = output_mesh_format(job.output, job.format, true);  // before any work
   check_output_folder(job.output);
   if (!job.json.empty()) check_output_folder(job.json);
   if (!job.png_dir.empty()) check_picture_folder(job.png_dir);

@@ -597,8 +597,9 @@ PYBIND11_MODULE(disktune, m) {
             mesh.write(path, format);
           },
           py::arg("path"), py::arg("format") = py::none(),
-          "Writes the mesh atomically: OFF, OBJ, PLY, VTK, VTU, MSH or STL by the path's "
-          "extension, or the format named (off, obj, ply, ply-binary, vtk, vtu, msh, stl); a "
+          "Writes the mesh atomically: OFF, OBJ, PLY, VTK, VTU, MSH, STL or Triangle's .node/.ele "
+          "pair (planar meshes) by the path's extension, or the format named (off, obj, ply, "
+          "ply-binary, vtk, vtu, msh, stl, triangle); a "
           "surface mesh's feature edges go as lines into OBJ, VTK, VTU and MSH");
 
   py::class_<PyRve>(m, "Rve", "A periodic cell of non-overlapping fibers.")

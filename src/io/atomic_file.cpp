@@ -79,6 +79,10 @@ void write_file_atomically(const std::string& path, const std::function<void(std
     if (!out) throw IoError("writing '" + path + "' failed");
     return;
   }
+  // Refused before anything is written: renamed over at the end, a folder would fail
+  // only after the outputs before it in a transaction were in place.
+  if (!ec && fs::is_directory(kind))
+    throw IoError("cannot write '" + path + "': it is a folder; give a file name");
   const std::string target = target_of(path);
   // A per-call suffix keeps concurrent writers to the same path apart.
   const std::string tmp = target + ".tmp" + std::to_string(std::random_device{}() & 0xffffff);
@@ -119,6 +123,8 @@ OutputTransaction::~OutputTransaction() {
     forget(s.slot);
   }
 }
+
+bool OutputTransaction::open_here() { return t_open != nullptr; }
 
 void OutputTransaction::commit() {
   if (t_open == this) t_open = nullptr;

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Every mesh (periodic, planar, surface) as ASCII OFF, OBJ, PLY, legacy VTK, VTK XML
-// (.vtu) or Gmsh MSH 4.1, or binary STL, by one writer: a planar vertex is written with
-// z = 0.
+// Every mesh (periodic, planar, surface) as ASCII OFF, OBJ, PLY, legacy VTK or Gmsh MSH
+// 4.1, binary VTK XML (.vtu), PLY or STL, or Triangle's .node/.ele, by one writer: a planar vertex
+// is written with z = 0.
 #include "disktune/mesh_io.h"
 
 #include <algorithm>
@@ -37,6 +37,7 @@ struct MeshView {
   const std::vector<std::uint32_t>* line_group = nullptr;
   std::vector<std::string> group_names = {};
   std::string surface_name = "surface";
+  bool planar = true;  // z = 0 throughout: Triangle's files can hold it
 
   std::size_t line_count() const { return lines ? lines->size() : 0; }
   std::uint32_t group_of(std::size_t k) const { return line_group ? (*line_group)[k] : 0; }
@@ -73,27 +74,69 @@ void put_triangles(std::ostream& out, const MeshView& mesh, const char* prefix, 
   for (const auto& t : mesh.triangles) out << prefix << t[0] + base << ' ' << t[1] + base << ' ' << t[2] + base << '\n';
 }
 
-// VTK's XML unstructured grid, ASCII: triangles (type 5), then the lines (type 3), and
-// the disk ids as point data.
+// Base64 (RFC 4648, padded) of `bytes`.
+std::string base64(const std::string& bytes) {
+  static const char kDigits[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  out.reserve((bytes.size() + 2) / 3 * 4);
+  for (std::size_t i = 0; i < bytes.size(); i += 3) {
+    const std::size_t n = std::min<std::size_t>(3, bytes.size() - i);
+    std::uint32_t group = 0;
+    for (std::size_t k = 0; k < 3; ++k)
+      group = group << 8 | (k < n ? static_cast<unsigned char>(bytes[i + k]) : 0u);
+    for (std::size_t k = 0; k < 4; ++k) out += k <= n ? kDigits[group >> (18 - 6 * k) & 63] : '=';
+  }
+  return out;
+}
+
+// One inline binary DataArray of VTK XML: base64 of the byte count (UInt64, the file's
+// header_type) followed by the values, little-endian as on every machine this builds for.
+template <class T>
+void put_binary_array(std::ostream& out, const char* type, const char* name, int components,
+                      const std::vector<T>& values) {
+  std::string bytes(sizeof(std::uint64_t) + values.size() * sizeof(T), '\0');
+  const std::uint64_t count = values.size() * sizeof(T);
+  std::memcpy(bytes.data(), &count, sizeof count);
+  if (!values.empty()) std::memcpy(bytes.data() + sizeof count, values.data(), count);
+  out << "<DataArray type=\"" << type << '"';
+  if (name) out << " Name=\"" << name << '"';
+  if (components > 1) out << " NumberOfComponents=\"" << components << '"';
+  out << " format=\"binary\">\n" << base64(bytes) << "\n</DataArray>\n";
+}
+
+// VTK's XML unstructured grid, binary (base64 inline, uncompressed): triangles (type 5),
+// then the lines (type 3), and the disk ids as point data.
 void put_vtu(std::ostream& out, const MeshView& mesh) {
-  const std::size_t nt = mesh.triangles.size(), nl = mesh.lines ? mesh.lines->size() : 0;
+  const std::size_t nt = mesh.triangles.size(), nl = mesh.line_count();
+  std::vector<double> points;
+  for (const Vec3& p : mesh.vertices) points.insert(points.end(), {p.x, p.y, p.z});
+  std::vector<std::int64_t> connectivity, offsets;
+  std::vector<std::uint8_t> types;
+  for (const auto& t : mesh.triangles) {
+    connectivity.insert(connectivity.end(), {t[0], t[1], t[2]});
+    offsets.push_back(static_cast<std::int64_t>(connectivity.size()));
+    types.push_back(5);
+  }
+  for (std::size_t k = 0; k < nl; ++k) {
+    connectivity.insert(connectivity.end(), {(*mesh.lines)[k][0], (*mesh.lines)[k][1]});
+    offsets.push_back(static_cast<std::int64_t>(connectivity.size()));
+    types.push_back(3);
+  }
   out << "<?xml version=\"1.0\"?>\n<!-- " << mesh.title << " -->\n"
-      << "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n<UnstructuredGrid>\n"
-      << "<Piece NumberOfPoints=\"" << mesh.vertices.size() << "\" NumberOfCells=\"" << nt + nl << "\">\n"
-      << "<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
-  put_vertices(out, mesh, "");
-  out << "</DataArray>\n</Points>\n<Cells>\n<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
-  put_triangles(out, mesh, "", 0);
-  for (std::size_t k = 0; k < nl; ++k) out << (*mesh.lines)[k][0] << ' ' << (*mesh.lines)[k][1] << '\n';
-  out << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
-  for (std::size_t k = 0; k < nt + nl; ++k) out << (k < nt ? 3 * (k + 1) : 3 * nt + 2 * (k + 1 - nt)) << '\n';
-  out << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
-  for (std::size_t k = 0; k < nt + nl; ++k) out << (k < nt ? "5\n" : "3\n");
-  out << "</DataArray>\n</Cells>\n";
+      << "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
+         "header_type=\"UInt64\">\n"
+      << "<UnstructuredGrid>\n<Piece NumberOfPoints=\"" << mesh.vertices.size()
+      << "\" NumberOfCells=\"" << nt + nl << "\">\n<Points>\n";
+  put_binary_array(out, "Float64", nullptr, 3, points);
+  out << "</Points>\n<Cells>\n";
+  put_binary_array(out, "Int64", "connectivity", 1, connectivity);
+  put_binary_array(out, "Int64", "offsets", 1, offsets);
+  put_binary_array(out, "UInt8", "types", 1, types);
+  out << "</Cells>\n";
   if (mesh.vertex_disk) {
-    out << "<PointData Scalars=\"disk_id\">\n<DataArray type=\"UInt32\" Name=\"disk_id\" format=\"ascii\">\n";
-    for (const DiskId id : *mesh.vertex_disk) out << id << '\n';
-    out << "</DataArray>\n</PointData>\n";
+    out << "<PointData Scalars=\"disk_id\">\n";
+    put_binary_array(out, "UInt32", "disk_id", 1, *mesh.vertex_disk);
+    out << "</PointData>\n";
   }
   out << "</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
 }
@@ -184,8 +227,53 @@ void put_binary_ply(std::ostream& out, const MeshView& mesh) {
   }
 }
 
+// Triangle's NAME.node (vertices, numbered from 1, with a boundary marker: 1 + the
+// number of the line group a vertex ends a line of, else 0) and NAME.ele (triangles),
+// both or neither: in an OutputTransaction.
+void put_triangle_files(const std::string& path, const MeshView& mesh) {
+  const std::string ext = detail::lower_extension(path);
+  if (ext != ".node" && ext != ".ele") {
+    throw InvalidInput(
+        "Triangle's mesh format is two files, NAME.node and NAME.ele: give a path ending in .node "
+        "or "
+        ".ele, not '" +
+        path + "'");
+  }
+  if (!mesh.planar) {
+    throw InvalidInput(
+        "Triangle's .node/.ele files hold planar meshes, and this one is a surface: write it as "
+        ".off, "
+        ".obj, .ply, .vtk, .vtu, .msh or .stl");
+  }
+  const std::string stem = path.substr(0, path.size() - ext.size());
+  std::vector<std::uint32_t> marker(mesh.vertices.size(), 0);
+  for (std::size_t k = 0; k < mesh.line_count(); ++k)
+    for (const std::uint32_t v : (*mesh.lines)[k]) marker[v] = mesh.group_of(k) + 1;
+  std::optional<OutputTransaction> own;
+  if (!OutputTransaction::open_here()) own.emplace();
+  write_file_atomically(stem + ".node", [&](std::ostream& out) {
+    out << "# " << mesh.title << "\n" << mesh.vertices.size() << " 2 0 1\n";
+    for (std::size_t k = 0; k < mesh.vertices.size(); ++k) {
+      out << k + 1 << ' ';
+      put_number(out, mesh.vertices[k].x);
+      out << ' ';
+      put_number(out, mesh.vertices[k].y);
+      out << ' ' << marker[k] << '\n';
+    }
+  });
+  write_file_atomically(stem + ".ele", [&](std::ostream& out) {
+    out << "# " << mesh.title << "\n" << mesh.triangles.size() << " 3 0\n";
+    for (std::size_t k = 0; k < mesh.triangles.size(); ++k) {
+      const auto& t = mesh.triangles[k];
+      out << k + 1 << ' ' << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
+    }
+  });
+  if (own) own->commit();
+}
+
 void write_view(const std::string& path, const MeshView& mesh, std::optional<MeshFormat> given = {}) {
   const MeshFormat format = given ? *given : mesh_format_for_path(path);
+  if (format == MeshFormat::Triangle) return put_triangle_files(path, mesh);
   const std::size_t nv = mesh.vertices.size(), nt = mesh.triangles.size();
   write_file_atomically(path, [&](std::ostream& out) {
     switch (format) {
@@ -231,6 +319,8 @@ void write_view(const std::string& path, const MeshView& mesh, std::optional<Mes
       case MeshFormat::Vtu: return put_vtu(out, mesh);
       case MeshFormat::Msh: return put_msh(out, mesh);
       case MeshFormat::Stl: return put_stl(out, mesh);
+      case MeshFormat::Triangle:
+        return;  // two files: put_triangle_files
     }
   });
 }
@@ -246,19 +336,27 @@ MeshFormat mesh_format_for_path(const std::string& path) {
   if (ext == ".vtu") return MeshFormat::Vtu;
   if (ext == ".msh") return MeshFormat::Msh;
   if (ext == ".stl") return MeshFormat::Stl;
+  if (ext == ".node" || ext == ".ele") return MeshFormat::Triangle;
   throw InvalidInput("cannot tell the mesh format of '" + path +
-                     "' from its extension; supported: .off, .obj, .ply, .vtk, .vtu, .msh, .stl (.vtk is legacy VTK, "
-                     ".vtu VTK XML, .msh Gmsh 4.1, .stl binary; the others ASCII), or name the format (binary PLY: "
+                     "' from its extension; supported: .off, .obj, .ply, .vtk, .vtu, .msh, .stl, "
+                     ".node/.ele (.vtk is legacy "
+                     "VTK, .vtu VTK XML, .msh Gmsh 4.1, .node/.ele Triangle's pair; .vtu and .stl "
+                     "binary, the others "
+                     "ASCII), or name the format (binary PLY: "
                      "ply-binary)");
 }
 
 MeshFormat mesh_format_named(const std::string& name) {
   static const std::pair<const char*, MeshFormat> kNames[] = {
-      {"off", MeshFormat::Off}, {"obj", MeshFormat::Obj}, {"ply", MeshFormat::Ply}, {"ply-binary", MeshFormat::PlyBinary},
-      {"vtk", MeshFormat::Vtk}, {"vtu", MeshFormat::Vtu}, {"msh", MeshFormat::Msh},  {"stl", MeshFormat::Stl}};
+      {"off", MeshFormat::Off},          {"obj", MeshFormat::Obj},
+      {"ply", MeshFormat::Ply},          {"ply-binary", MeshFormat::PlyBinary},
+      {"vtk", MeshFormat::Vtk},          {"vtu", MeshFormat::Vtu},
+      {"msh", MeshFormat::Msh},          {"stl", MeshFormat::Stl},
+      {"triangle", MeshFormat::Triangle}};
   for (const auto& [known, format] : kNames)
     if (name == known) return format;
-  throw InvalidInput("mesh format '" + name + "': give off, obj, ply, ply-binary, vtk, vtu, msh or stl");
+  throw InvalidInput("mesh format '" + name +
+                     "': give off, obj, ply, ply-binary, vtk, vtu, msh, stl or triangle");
 }
 
 namespace {
@@ -288,6 +386,7 @@ MeshView view_of(const SurfaceMesh& mesh) {
                 "disktune surface mesh: " + std::to_string(mesh.vertices.size()) + " vertices",
                 &mesh.feature_edges};
   view.group_names = {"feature edges"};
+  view.planar = false;
   return view;
 }
 

@@ -304,6 +304,14 @@ def test_meshes_write_themselves_in_the_librarys_formats(tmp_path):
     assert set(back.field_data) == {"domain", "outer boundary", "hole 1"}
     lines = sum(len(c.data) for c in back.cells if c.type == "line")
     assert lines == holed_packing.fixed.sum()  # an edge from each boundary disk to the next
+    disktune.mesh(holed_packing).write(str(tmp_path / "h.node"))  # Triangle's pair, from 1
+    node = np.loadtxt(tmp_path / "h.node", skiprows=2)
+    ele = np.loadtxt(tmp_path / "h.ele", skiprows=2, dtype=int)
+    hm = disktune.mesh(holed_packing)
+    assert np.array_equal(node[:, 1:3], hm.points) and np.array_equal(ele[:, 1:] - 1, hm.triangles)
+    assert sorted(set(node[:, 3])) == [0, 1, 2]  # inside, the outer loop, the hole
+    with pytest.raises(disktune.InvalidInput):
+        m.write(str(tmp_path / "e.node"))  # a surface mesh: not Triangle's
     with pytest.raises(disktune.IoError):
         m.write(str(tmp_path / "no" / "such" / "e.off"))
     with pytest.raises(disktune.InvalidInput):
