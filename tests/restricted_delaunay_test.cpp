@@ -2,6 +2,8 @@
 // Surface resampling's output mesh: the restricted Delaunay triangulation of well-spread
 // samples on the data surfaces (topology, orientation, distance), the topology check on
 // hand-made defects, the surface mesh measures, the writer and the JSON report.
+#include "disktune/restricted_delaunay.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -11,11 +13,14 @@
 #include <nlohmann/json.hpp>
 #include <tuple>
 
+#include "../src/mesh/dual_edge.h"
 #include "disktune/quality.h"
 #include "disktune/quality_json.h"
 #include "disktune/random.h"
-#include "disktune/restricted_delaunay.h"
-#include "../src/mesh/dual_edge.h"
+#include "disktune/surface_features.h"
+#include "disktune/surface_sampling.h"
+#include "disktune/surface_tuning.h"
+#include "surface_checks.h"
 #include "test_util.h"
 
 namespace disktune {
@@ -169,6 +174,44 @@ TEST(RestrictedDelaunay, FilteredDualEdgesKeepTheRationalTriangles) {
   // Both fast arithmetics did their share (the ring: the slivers on flat faces).
   EXPECT_GT(total.interval, 5 * total.ring);
   EXPECT_GT(total.ring, 1000u);
+}
+
+// Coverage::maximal searches each dual edge only within r of its facet's corners: on
+// maximal packings (the oracle says so first, apart from the library) of closed, open
+// and creased surfaces, sampled and tuned, it keeps exactly the triangles and feature
+// edges of the full search, which FilteredDualEdgesKeepTheRationalTriangles holds to
+// the rational reference.
+TEST(RestrictedDelaunay, AMaximalPackingsCutDualEdgesKeepEveryTriangle) {
+  struct Case {
+    const char* name;
+    double fraction;  // r, of the bounding box's diagonal
+    double features;  // degrees; 0: none
+  };
+  const Case cases[] = {{"sphere.off", 0.015, 0},  {"eight.off", 0.015, 0},
+                        {"elephant.off", 0.01, 0}, {"fandisk.off", 0.012, 60},
+                        {"joint.off", 0.02, 60},   {"mesh_with_border.off", 0.01, 0}};
+  for (const auto& [name, fraction, features] : cases) {
+    SurfaceDomain s = surface(name);
+    if (features > 0) s.set_features(detect_features(s, {features, features, 0}));
+    const auto shared = std::make_shared<const SurfaceDomain>(std::move(s));
+    const double r = fraction * diagonal(*shared);
+    for (const std::uint64_t seed : {1, 2}) {
+      Rng rng(seed);
+      SurfacePacking p = sample_mps(shared, SurfaceSizing::constant(r), rng);
+      for (const bool tuned : {false, true}) {
+        if (tuned) tune(p, Target::count(p.size() * 5 / 4), rng);
+        const std::string what =
+            std::string(name) + (tuned ? " tuned" : "") + ", seed " + std::to_string(seed);
+        const oracle::SurfaceReport premise = test::surface_report(p, 4);
+        ASSERT_TRUE(premise.ok()) << what << ": " << premise.summary();
+        const SurfaceMesh full = restricted_delaunay(p),
+                          cut = restricted_delaunay(p, Coverage::maximal);
+        ASSERT_GT(full.triangles.size(), p.size()) << what;
+        EXPECT_EQ(cut.triangles, full.triangles) << what;
+        EXPECT_EQ(cut.feature_edges, full.feature_edges) << what;
+      }
+    }
+  }
 }
 
 // Samples on a grid on each face of a cube: four samples on a grid square are

@@ -374,11 +374,15 @@ struct NearSegment {
 /// plane or edge, four cospherical samples).
 class DualEdges {
  public:
+  /// `reach` > 0: every point of the surface lies within it of a sample, so a point of
+  /// the surface on a facet's dual edge (equally near its three corners, and no sample
+  /// nearer) lies within it of the facet's corners; only that part of the edge is searched.
   DualEdges(const Delaunay& dt, const std::vector<Vec3>& samples, const SurfaceDomain& surface,
-            detail::DualArithmetic arithmetic)
-      : dt_(dt), samples_(samples), surface_(surface), arithmetic_(arithmetic) {
+            detail::DualArithmetic arithmetic, double reach)
+      : dt_(dt), samples_(samples), surface_(surface), arithmetic_(arithmetic), reach_(reach) {
     const std::vector<Vec3>& v = surface.vertices();
     for (const auto& t : surface.triangles()) triangles_.emplace_back(point(v[t[0]]), point(v[t[1]]), point(v[t[2]]));
+    for (const auto& t : triangles_) boxes_.push_back(t.bbox());
     tree_.insert(triangles_.begin(), triangles_.end());
     tree_.build();
     // A ball around the surface: a ray's part beyond it meets nothing.
@@ -475,7 +479,8 @@ class DualEdges {
           return detail::Crossing::miss;
         }
       }
-      return along<NT>(p, box<NT>(e.cell), q, box<NT>(e.other), out);
+      return along<NT>(p, box<NT>(e.cell), q, box<NT>(e.other),
+                       e.cell->vertex((e.facet + 1) & 3)->info(), out);
     }
     // The ray, cut where it leaves the ball around the surface.
     const Vec3 a = at(e.cell, (e.facet + 1) & 3), b = at(e.cell, (e.facet + 2) & 3), c = at(e.cell, (e.facet + 3) & 3);
@@ -506,19 +511,40 @@ class DualEdges {
       [[maybe_unused]] const RoundingFor<NT> rounding;
       q = detail::moved(p, out_dir, t);
     }
-    return along<NT>(p, from, q, box_of(q), out);
+    return along<NT>(p, from, q, box_of(q), e.cell->vertex((e.facet + 1) & 3)->info(), out);
   }
 
-  /// The triangles the segment pq meets, or unsure; bp and bq hold p and q.
+  /// The triangles the segment pq meets, or unsure; bp and bq hold p and q, `corner`
+  /// is the sample at a corner of the facet whose dual it is.
   template <class NT>
   detail::Crossing along(const detail::HomogeneousPoint<NT>& p, const PointBox& bp,
-                         const detail::HomogeneousPoint<NT>& q, const PointBox& bq, std::vector<std::size_t>& out) {
+                         const detail::HomogeneousPoint<NT>& q, const PointBox& bq,
+                         std::uint32_t corner, std::vector<std::size_t>& out) {
     out.clear();
     if (!bp.finite() || !bq.finite()) return detail::Crossing::unsure;
+    if (reach_ > 0) {
+      // Only the part within reach of the corner can meet the surface: most duals of
+      // Delaunay facets that are no mesh triangles have none, and long ones get short;
+      // what is left can meet only the triangles near the corner (in intervals).
+      const Vec3 c = samples_[corner];
+      const auto [u0, u1] = chord(bp, bq, {c.x, c.y, c.z}, reach_ * (1 + 1e-6));
+      if (u0 > u1) return detail::Crossing::miss;
+      const std::vector<std::uint32_t>* local =
+          std::is_same_v<NT, Interval> ? &triangles_near(corner) : nullptr;
+      if (u0 > 0 || u1 < 1) {
+        detail::HomogeneousPoint<NT> from, to;
+        {
+          [[maybe_unused]] const RoundingFor<NT> rounding;
+          from = detail::between(p, q, u0), to = detail::between(p, q, u1);
+        }
+        return along_inside(from, box_of(from), to, box_of(to), out, local);
+      }
+      return along_inside(p, bp, q, bq, out, local);
+    }
     if (!in_ball(bp) || !in_ball(bq)) {
       // A flat sliver's circumcenter can lie 10^16 away, where doubles say nothing about
       // the surface: the segment is cut, exactly, to the part that can meet the ball.
-      const auto [u0, u1] = chord(bp, bq);
+      const auto [u0, u1] = chord(bp, bq, ball_center_, 1.01 * ball_radius_);
       if (u0 > u1) return detail::Crossing::miss;
       if (u0 > 0 || u1 < 1) {
         detail::HomogeneousPoint<NT> from, to;
@@ -541,28 +567,50 @@ class DualEdges {
     return d2 < ball_radius_ * ball_radius_;
   }
 
-  /// Parameters u0, u1 such that the points p + u (q - p) in the ball have u in [u0, u1]
-  /// (u0 > u1 if none): the ball's chord lies within R / |q - p| of the parameter of the
-  /// point nearest to its center. Bounds rounded outward by interval arithmetic.
-  std::pair<double, double> chord(const PointBox& bp, const PointBox& bq) const {
+  /// Parameters u0, u1 such that the points p + u (q - p) in the ball (center, radius)
+  /// have u in [u0, u1] (u0 > u1 if none): the ball's chord lies within R / |q - p| of
+  /// the parameter of the point nearest to its center. Bounds rounded outward by
+  /// interval arithmetic.
+  static std::pair<double, double> chord(const PointBox& bp, const PointBox& bq,
+                                         const std::array<double, 3>& center, double radius) {
     [[maybe_unused]] const RoundingFor<Interval> rounding;
     Interval length2(0), toward(0);
     for (int k = 0; k < 3; ++k) {
       const Interval from(bp.lo[k], bp.hi[k]), step = Interval(bq.lo[k], bq.hi[k]) - from;
       length2 += CGAL::square(step);
-      toward += (Interval(ball_center_[k]) - from) * step;
+      toward += (Interval(center[k]) - from) * step;
     }
     if (!(length2.inf() > 0)) return {0, 1};
     const Interval nearest = toward / length2;
-    const Interval reach = Interval(1.01 * ball_radius_) / CGAL::sqrt(Interval(length2.inf()));
+    const Interval reach = Interval(radius) / CGAL::sqrt(Interval(length2.inf()));
     return {std::max(0.0, (nearest - reach).inf()), std::min(1.0, (nearest + reach).sup())};
   }
 
-  /// along() for a segment that the caller has cut to the ball where needed.
+  /// The surface triangles whose boxes come within 1.5 reach (plus the largest pad an
+  /// interval search allows) of sample s, once per sample: every triangle a dual edge cut
+  /// to the ball of reach around s can meet (the cut's ends lie within sqrt 2 of reach).
+  const std::vector<std::uint32_t>& triangles_near(std::uint32_t s) {
+    if (near_sample_.empty())
+      near_sample_.resize(samples_.size()), near_known_.resize(samples_.size());
+    if (!near_known_[s]) {
+      const Vec3 c = samples_[s];
+      const double w = 1.5 * reach_ * (1 + 1e-6) + 2e-3 * ball_radius_ + 1e-14 * scale_;
+      NearSegment box{{c.x, c.y, c.z}, {0, 0, 0}, w, triangles_.begin(), &candidates_};
+      candidates_.clear();
+      tree_.traversal(point(c), box);
+      near_sample_[s].assign(candidates_.begin(), candidates_.end());
+      near_known_[s] = true;
+    }
+    return near_sample_[s];
+  }
+
+  /// along() for a segment that the caller has cut to the ball where needed; with
+  /// `local`, the only triangles it can meet.
   template <class NT>
   detail::Crossing along_inside(const detail::HomogeneousPoint<NT>& p, const PointBox& bp,
                                 const detail::HomogeneousPoint<NT>& q, const PointBox& bq,
-                                std::vector<std::size_t>& out) {
+                                std::vector<std::size_t>& out,
+                                const std::vector<std::uint32_t>* local = nullptr) {
     if (!bp.finite() || !bq.finite()) return detail::Crossing::unsure;
     const Point a = bp.middle(), b = bq.middle();
     NearSegment near{{a.x(), a.y(), a.z()}, {b.x() - a.x(), b.y() - a.y(), b.z() - a.z()}, 0, triangles_.begin(),
@@ -573,7 +621,12 @@ class DualEdges {
     // Too vague to be worth a search: the next arithmetic will be sharper.
     if (std::is_same_v<NT, Interval> && near.pad > 1e-3 * ball_radius_) return detail::Crossing::unsure;
     candidates_.clear();
-    tree_.traversal(a, near);
+    if (local) {
+      for (const std::uint32_t k : *local)
+        if (near.near(boxes_[k])) candidates_.push_back(k);
+    } else {
+      tree_.traversal(a, near);
+    }
     // Exact centers are tested in intervals first (their rounding is tight), exactly
     // only where that is unsure.
     [[maybe_unused]] const RoundingFor<Interval> rounding;
@@ -640,7 +693,11 @@ class DualEdges {
   const std::vector<Vec3>& samples_;
   const SurfaceDomain& surface_;
   detail::DualArithmetic arithmetic_;
+  double reach_;            // 0: the samples' coverage is not known
   TriangleList triangles_;  // every surface triangle, in order (zero-area ones too)
+  std::vector<CGAL::Bbox_3> boxes_;                      // their bounding boxes
+  std::vector<std::vector<std::uint32_t>> near_sample_;  // triangles_near, per sample
+  std::vector<bool> near_known_;
   Tree tree_;
   std::array<double, 3> ball_center_{};
   double ball_radius_ = 0, scale_ = 1;
@@ -660,7 +717,7 @@ SurfaceMesh restricted_delaunay(const std::vector<Vec3>& samples, const SurfaceD
   return restricted_delaunay(samples, surface, std::vector<std::uint32_t>(samples.size(), kAnyPatch), {});
 }
 
-SurfaceMesh restricted_delaunay(const SurfacePacking& packing) {
+SurfaceMesh restricted_delaunay(const SurfacePacking& packing, Coverage coverage) {
   std::vector<Vec3> samples;
   std::vector<std::uint32_t> patch;
   for (const DiskId id : packing.ids()) {
@@ -669,7 +726,9 @@ SurfaceMesh restricted_delaunay(const SurfacePacking& packing) {
                                                  : packing.domain().triangle_patch()[packing.point(id).triangle]);
   }
   const auto along_features = detail::feature_neighbours(packing);
-  SurfaceMesh mesh = restricted_delaunay(samples, packing.domain(), patch, along_features);
+  SurfaceMesh mesh = detail::restricted_delaunay(
+      samples, packing.domain(), patch, along_features, detail::DualArithmetic::filtered, nullptr,
+      coverage == Coverage::maximal ? packing.max_radius() : 0);
   // The feature curves' consecutive disks that the mesh joins.
   std::set<std::pair<std::uint32_t, std::uint32_t>> edges;
   for (const auto& t : mesh.triangles)
@@ -686,10 +745,11 @@ SurfaceMesh restricted_delaunay(const std::vector<Vec3>& samples, const SurfaceD
                                      nullptr);
 }
 
-SurfaceMesh detail::restricted_delaunay(const std::vector<Vec3>& samples, const SurfaceDomain& surface,
-                                        const std::vector<std::uint32_t>& sample_patch,
-                                        const std::vector<std::array<std::uint32_t, 2>>& feature_edges,
-                                        DualArithmetic arithmetic, DualEdgeCounts* counts) {
+SurfaceMesh detail::restricted_delaunay(
+    const std::vector<Vec3>& samples, const SurfaceDomain& surface,
+    const std::vector<std::uint32_t>& sample_patch,
+    const std::vector<std::array<std::uint32_t, 2>>& feature_edges, DualArithmetic arithmetic,
+    DualEdgeCounts* counts, double covered_within) {
   check_samples(samples);
   if (sample_patch.size() != samples.size()) {
     throw InvalidInput("restricted_delaunay: " + std::to_string(sample_patch.size()) + " patches for " +
@@ -713,7 +773,7 @@ SurfaceMesh detail::restricted_delaunay(const std::vector<Vec3>& samples, const 
     throw InvalidInput("restricted_delaunay: the " + std::to_string(samples.size()) +
                        " samples lie on one line; sample the whole surface");
   }
-  DualEdges duals(dt, samples, surface, arithmetic);
+  DualEdges duals(dt, samples, surface, arithmetic, covered_within);
   const std::vector<Vec3>& sv = surface.vertices();
   SurfaceMesh mesh;
   mesh.vertices = samples;
