@@ -29,6 +29,10 @@ class BoxTree {
     order_.resize(boxes.size());
     for (std::uint32_t i = 0; i < order_.size(); ++i) order_[i] = i;
     if (!order_.empty()) build(0, order_.size());
+    // The boxes in leaf order from now on: a leaf reads its boxes in a row.
+    std::vector<Box> in_order(boxes_.size());
+    for (std::size_t i = 0; i < order_.size(); ++i) in_order[i] = boxes_[order_[i]];
+    boxes_ = std::move(in_order);
   }
 
   /// The smallest distance(item) over the items, each box at least that far from p being
@@ -40,24 +44,25 @@ class BoxTree {
     return best;
   }
 
-  /// f(item) for each item whose box comes within R of p, in no set order (f must not
-  /// query this thread's trees again: the walk keeps its stack in a thread_local).
+  /// f(item) for each item whose box comes within R of p, in no set order.
   template <class F>
   void for_each_within(Vec3 p, double R, F&& f) const {
     if (nodes_.empty()) return;
-    thread_local std::vector<std::uint32_t> stack;
-    stack.assign(1, 0);
+    // Median splits keep the depth under 64 for any count that fits in memory, and a
+    // walk holds at most one pending node per level.
+    std::uint32_t stack[64];
+    std::size_t size = 0;
+    stack[size++] = 0;
     const double R2 = R * R;
-    while (!stack.empty()) {
-      const Node& n = nodes_[stack.back()];
-      stack.pop_back();
+    while (size > 0) {
+      const Node& n = nodes_[stack[--size]];
       if (box_distance2(n.box, p) > R2) continue;
       if (n.left != 0) {
-        stack.push_back(n.left), stack.push_back(n.right);
+        stack[size++] = n.left, stack[size++] = n.right;
         continue;
       }
       for (std::uint32_t i = n.begin; i < n.end; ++i)
-        if (box_distance2(boxes_[order_[i]], p) <= R2) f(order_[i]);
+        if (box_distance2(boxes_[i], p) <= R2) f(order_[i]);
     }
   }
 
@@ -116,7 +121,7 @@ class BoxTree {
     const Node& n = nodes_[k];
     if (n.left == 0) {
       for (std::uint32_t i = n.begin; i < n.end; ++i)
-        if (box_distance(boxes_[order_[i]], p) < best) best = std::min(best, distance(order_[i]));
+        if (box_distance(boxes_[i], p) < best) best = std::min(best, distance(order_[i]));
       return;
     }
     double near_side = box_distance(nodes_[n.left].box, p), far_side = box_distance(nodes_[n.right].box, p);
@@ -126,8 +131,8 @@ class BoxTree {
     if (far_side < best) search(second, p, best, distance);
   }
 
-  std::vector<Box> boxes_;
-  std::vector<std::uint32_t> order_;
+  std::vector<Box> boxes_;            // by item while building, then in leaf order
+  std::vector<std::uint32_t> order_;  // the item at each leaf position
   std::vector<Node> nodes_;
 };
 
