@@ -587,8 +587,8 @@ class DualEdges {
   }
 
   /// The surface triangles whose boxes come within 1.5 reach (plus the largest pad an
-  /// interval search allows) of sample s, once per sample: every triangle a dual edge cut
-  /// to the ball of reach around s can meet (the cut's ends lie within sqrt 2 of reach).
+  /// interval search allows) of sample s, once per sample: a crossing of a dual edge of
+  /// a facet at s lies within reach of s, so these hold every triangle it can be on.
   const std::vector<std::uint32_t>& triangles_near(std::uint32_t s) {
     if (near_sample_.empty())
       near_sample_.resize(samples_.size()), near_known_.resize(samples_.size());

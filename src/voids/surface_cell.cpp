@@ -17,7 +17,7 @@ namespace disktune::detail {
 namespace {
 
 // A convex polygon of at most 32 corners, on the stack: clipping a triangle by k planes
-// makes at most 3 + k, and a cell needing more gives up (an upper bound: infinity).
+// makes at most 3 + k, and a cell needing more gives up (the answer is then false).
 struct Polygon {
   std::array<Vec3, 32> corner;
   std::size_t size = 0;
