@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Checks on the files a command will write, made before any work: their folders exist,
 // no two outputs are one file, and no output is a file the command reads.
-#include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <system_error>
@@ -32,12 +31,15 @@ MeshFormat output_mesh_format(const std::string& path, const std::string& format
   if (surface) {
     throw InvalidInput(
         "Triangle's .node/.ele files hold planar meshes, and this one is a surface: write it as "
-        ".off, "
-        ".obj, .ply, .vtk, .vtu, .msh or .stl");
+        ".off, .obj, .ply, .vtk, .vtu, .msh or .stl");
   }
-  std::string ext = fs::path(path).extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (ext != ".node" && ext != ".ele") {
+  // Two files, so a path the library itself names by extension (.node or .ele).
+  bool named = false;
+  try {
+    named = mesh_format_for_path(path) == MeshFormat::Triangle;
+  } catch (const InvalidInput&) {
+  }
+  if (!named) {
     throw InvalidInput(
         "Triangle's mesh format is two files, NAME.node and NAME.ele: give --output NAME.node");
   }
