@@ -2,7 +2,9 @@
 // disktune-remesh-compare: disktune's remesh against CGAL 5.5's isotropic_remeshing on
 // the same surface, at the same vertex count, measured by the same (disktune's) quality
 // code in the same run. CGAL's remesher takes an edge length, not a vertex count, so its
-// length is calibrated until the count comes within 1 % of disktune's.
+// length is calibrated until the count comes within 1 % of disktune's. disktune runs
+// twice, on every core (its relaxation's threads) and on one, and says whether the two
+// meshes are the same (they should be, vertex for vertex).
 //
 //   disktune-remesh-compare SURFACE.off --vertices N [--features ANGLE|none] [--seed S]
 //                           [--iterations K]
@@ -24,6 +26,7 @@
 #include <CGAL/Polygon_mesh_processing/remesh.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <algorithm>
 #include <array>
 #include <cerrno>
 #include <chrono>
@@ -35,21 +38,22 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "disktune/boundary.h"
 #include "disktune/cvt_reference.h"
+#include "disktune/density.h"
 #include "disktune/errors.h"
 #include "disktune/mesh.h"
 #include "disktune/planar_domain.h"
-#include "disktune/sampling.h"
-#include "disktune/tuning.h"
 #include "disktune/quality.h"
-#include "disktune/density.h"
 #include "disktune/remesh.h"
 #include "disktune/restricted_delaunay.h"
+#include "disktune/sampling.h"
 #include "disktune/surface_domain.h"
 #include "disktune/surface_mesh.h"
+#include "disktune/tuning.h"
 
 namespace {
 
@@ -307,16 +311,31 @@ int main(int argc, char** argv) {
     std::vector<Row> rows;
     // disktune: timed from feature detection (inside remesh) to the mesh, as the CGAL
     // rows are.
+    // On every core (relaxation's threads), then on one: the same mesh, and the time
+    // beside CGAL's, which runs on one.
     disktune::RemeshOptions options;
     options.seed = args.seed;
     options.feature_angle = args.feature_angle.value_or(0);
-    const auto t0 = Clock::now();
-    disktune::RemeshResult result =
-        disktune::remesh(std::make_shared<const disktune::SurfaceDomain>(surface), args.vertices, options);
+    const auto shared = std::make_shared<const disktune::SurfaceDomain>(surface);
+    const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+    auto t0 = Clock::now();
+    disktune::RemeshResult result = disktune::remesh(shared, args.vertices, options);
     const double disktune_seconds = since(t0);
     const std::string tuned = result.tuning.reached ? "count reached"
                                                     : "count NOT reached: " + std::to_string(result.tuning.count);
-    rows.push_back({"disktune remesh", {std::move(result.mesh), disktune_seconds, tuned}});
+    options.threads = 1;
+    t0 = Clock::now();
+    disktune::RemeshResult alone = disktune::remesh(shared, args.vertices, options);
+    const double alone_seconds = since(t0);
+    const bool same = alone.mesh.vertices == result.mesh.vertices &&
+                      alone.mesh.triangles == result.mesh.triangles;
+    rows.push_back(
+        {"disktune remesh, " + std::to_string(cores) + (cores == 1 ? " thread" : " threads"),
+         {std::move(result.mesh), disktune_seconds, tuned}});
+    rows.push_back(
+        {"disktune remesh, 1 thread",
+         {std::move(alone.mesh), alone_seconds,
+          same ? "the same mesh, vertex for vertex" : "NOT the same mesh as on every core"}});
 
     rows.push_back({"CGAL isotropic_remeshing", cgal_remesh(cgal_input, args.vertices, std::nullopt, args.iterations.value_or(10))});
     if (args.feature_angle) {

@@ -200,7 +200,9 @@ TEST(Relaxation, KeepsASurfacePackingValidItsFeaturesFixedAndItsMeshsTopology) {
         }
       } else {
         int sweeps = 0;
-        relax(p, spacing, 12, rng, [&](int k) { return ++sweeps == k && judge(k); });
+        relax(
+            p, spacing, 12, rng, [&](int k) { return ++sweeps == k && judge(k); },
+            3);  // threads, whatever the cores
         ASSERT_EQ(sweeps, 12);
       }
       for (const auto& [id, at] : fixed) {
@@ -219,6 +221,55 @@ TEST(Relaxation, KeepsASurfacePackingValidItsFeaturesFixedAndItsMeshsTopology) {
                   after.obtuse);
       EXPECT_GT(after.near_60, before.near_60 + gain) << file << " " << spec << " seed " << seed;
       EXPECT_LT(after.obtuse, obtuse * before.obtuse) << file << " " << spec << " seed " << seed;
+    }
+  }
+}
+
+// Disks far apart move on separate threads, each seeing what it would see alone: the same
+// packing, bit for bit, for any number of threads (more than the cores too, which
+// interleaves them more), and valid by the oracle (after every sweep on three threads in
+// the test above). One radius and a sizing, features, a boundary, and a long spacing (the
+// springs then reach farthest).
+TEST(Relaxation, GivesTheSamePackingOnAnyNumberOfThreads) {
+  struct Case {
+    const char* file;
+    const char* spec;
+    double spacing;  // 0: the packing's hexagonal spacing
+  };
+  const Case cases[] = {{"fandisk.off", "0.04", 0},
+                        {"fandisk.off", "auto:0.05", 0},
+                        {"mesh_with_border.off", "0.35", 0},
+                        {"elephant.off", "0.015", 2.5}};
+  for (const auto& [file, spec, wide] : cases) {
+    SurfaceDomain d = *test::surface_file(file);
+    d.set_features(detect_features(d, {60, 60, 0}));
+    const auto surface = std::make_shared<const SurfaceDomain>(std::move(d));
+    Rng rng(4);
+    const SurfacePacking start = sample_mps(surface, parse_surface_sizing(spec, *surface), rng);
+    const double spacing =
+        wide > 0 ? wide : hex_spacing(static_cast<double>(start.size()) / density_unit(start));
+    std::vector<Vec3> one_thread;
+    std::size_t one_thread_moved = 0;
+    for (const unsigned threads : {1u, 2u, 3u, 7u}) {
+      SurfacePacking p = start;
+      Rng same(9);
+      const std::size_t moved = relax(p, spacing, 6, same, {}, threads);
+      std::vector<Vec3> centers;
+      for (const DiskId id : p.ids()) centers.push_back(p.center(id));
+      ASSERT_EQ(centers.size(), start.size());
+      if (threads == 1) {
+        one_thread = centers, one_thread_moved = moved;
+        EXPECT_GT(moved, start.size()) << file << " " << spec;  // it did move them
+        const auto rep = test::surface_report(p);
+        EXPECT_TRUE(rep.ok()) << file << " " << spec << ": " << rep.summary();
+        continue;
+      }
+      EXPECT_EQ(moved, one_thread_moved) << file << " " << spec << ", " << threads << " threads";
+      std::size_t differ = 0;
+      for (std::size_t i = 0; i < centers.size(); ++i)
+        differ += centers[i].x != one_thread[i].x || centers[i].y != one_thread[i].y ||
+                  centers[i].z != one_thread[i].z;
+      EXPECT_EQ(differ, 0u) << file << " " << spec << ", " << threads << " threads";
     }
   }
 }

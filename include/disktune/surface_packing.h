@@ -52,6 +52,14 @@ class SpaceGrid {
   /// Unregisters `id`, known to be at `p` (nothing when it is not there).
   void remove(std::uint32_t id, Vec3 p);
   std::uint64_t key(Vec3 p) const;
+  /// Makes the cells meeting the box [q - R, q + R] exist (empty where new): inserting or
+  /// removing an item there then changes only that cell's list, never the table, so
+  /// threads may do so in cells no other thread reads at the time.
+  void add_cells(Vec3 q, double R);
+  /// True when no two cells of the box [lo, hi] share a key (keys wrap after 2^21 cells
+  /// per axis, which only makes queries slower, but cells sharing a key are no longer
+  /// apart).
+  bool keys_distinct_within(Vec3 lo, Vec3 hi) const;
   /// f(id) for every item in a cell meeting the box [q - R, q + R].
   template <class F>
   void for_each_in_box(Vec3 q, double R, F&& f) const {
@@ -209,6 +217,18 @@ class SurfacePacking {
     return covered(q.p, patches_of(q), ignore1, ignore2);
   }
   bool covered(Vec3 q, PatchSet on, DiskId ignore1 = kNoDisk, DiskId ignore2 = kNoDisk) const;
+
+  /// The width of the neighbour grid's cells (a query within R of q reads the cells
+  /// meeting the box [q - R, q + R]; an item lies in the cell holding its center).
+  double grid_cell() const { return grid_.cell(); }
+  /// Makes the neighbour grid's cells within R of q exist (SpaceGrid::add_cells): until
+  /// then moves of a disk to within R of q change only the cells they leave and enter,
+  /// and the disk's own entries, so moves far enough apart can run on separate threads
+  /// (relax).
+  void add_grid_cells(Vec3 q, double R) { grid_.add_cells(q, R); }
+  /// False where the domain spans so many cells that cells far apart share a grid key
+  /// (SpaceGrid::keys_distinct_within), and moves far apart may still touch one cell.
+  bool grid_cells_distinct() const;
 
  private:
   std::shared_ptr<const SurfaceIndex> index_;

@@ -56,11 +56,13 @@ std::size_t repeller_inject(SurfacePacking& packing, DiskId p, Rng& rng, std::si
 std::size_t sift_eject(SurfacePacking& packing, DiskId p, Rng& rng, std::size_t max_removed);
 std::size_t attractor_eject(SurfacePacking& packing, DiskId p, Rng& rng, std::size_t max_removed);
 std::size_t wide_attractor_eject(SurfacePacking& packing, DiskId p, Rng& rng, std::size_t max_removed);
-/// Relaxation on a surface (tuning.h): each step in the tangent plane at the disk.
-std::size_t relax(SurfacePacking& packing, double spacing, Rng& rng);
-/// Several sweeps with momentum (tuning.h).
+/// Relaxation on a surface (tuning.h): each step in the tangent plane at the disk. The
+/// disks move in cubes of space a few radii wide, cubes far apart at once on up to
+/// `threads` threads (0: one per core); the result is the same for any number.
+std::size_t relax(SurfacePacking& packing, double spacing, Rng& rng, unsigned threads = 0);
+/// Several sweeps with momentum (tuning.h), on up to `threads` threads as above.
 std::size_t relax(SurfacePacking& packing, double spacing, int sweeps, Rng& rng,
-                  const std::function<bool(int)>& after_sweep = {});
+                  const std::function<bool(int)>& after_sweep = {}, unsigned threads = 0);
 /// For each angle above 90 degrees in `mesh` (the packing's restricted Delaunay mesh,
 /// vertex i its i-th live disk), moves the free disk at it radially away from the
 /// midpoint of the opposite edge, to just outside the circle with that edge as diameter

@@ -105,6 +105,7 @@ struct TuneJob {
   std::string input, output, svg;
   std::uint64_t seed = 1;
   int relax_sweeps = 0;  // after tuning (--relax)
+  unsigned threads = 0;  // for relaxation on a surface; 0: one per core
 };
 int run_tune(const TuneJob& job);
 
@@ -152,6 +153,7 @@ struct RemeshJob {
   std::uint64_t seed = 1;
   int relax_sweeps = 30;
   double max_memory = 0;
+  unsigned threads = 0;  // for relaxation; 0: one per core
 };
 int run_surface_remesh(const RemeshJob& job);
 

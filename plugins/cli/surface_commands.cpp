@@ -168,7 +168,7 @@ int run_surface_tune(const TuneJob& job) {
       start, target, job.method, [&](const TuneOptions& options) { return tune(packing, job.target, rng, options); },
       job.output, write_output);
   const double spacing = relax_spacing(packing.size(), domain.unit);
-  relax(packing, spacing, job.relax_sweeps, rng);
+  relax(packing, spacing, job.relax_sweeps, rng, {}, job.threads);
   const double seconds = seconds_since(t0);
 
   if (!job.output.empty()) write_output();
@@ -322,6 +322,7 @@ int run_surface_remesh(const RemeshJob& job) {
   options.relax_sweeps = job.relax_sweeps;
   options.feature_angle = 0;  // the surface's own features, as --features set them
   options.max_memory = job.max_memory;
+  options.threads = job.threads;
   const auto t0 = std::chrono::steady_clock::now();
   RemeshResult result;
   tune_with_progress(0, job.vertices, Method::automatic,

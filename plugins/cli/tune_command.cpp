@@ -27,6 +27,7 @@ struct TuneArgs {
   std::string input, output, svg;
   std::uint64_t seed = 1;
   int relax_sweeps = 0;
+  unsigned threads = 0;  // 0: one per core
 };
 
 
@@ -152,6 +153,10 @@ void add_tune_command(CLI::App& app, Action& action) {
                   "unchanged; the triangles of the mesh come closer to equilateral, the packing more "
                   "regular (remesh uses 30)")
       ->check(whole_number(0, 10000, "--relax"));
+  cmd->add_option("--threads", args->threads,
+                  "Threads for --relax on a surface (default: one per core); the result is the "
+                  "same for any number")
+      ->check(whole_number(1, 4096, "--threads"));
   writes_file(cmd->add_option("--output,-o", args->output, "CSV file to write (header x,y,r; x,y,z,r on a surface)"));
   writes_file(cmd->add_option("--svg", args->svg, "Also draw the packing (frozen crystal disks in blue)"));
   cmd->callback([args, cmd, &action] {
@@ -167,6 +172,7 @@ void add_tune_command(CLI::App& app, Action& action) {
     job.input = args->input, job.output = args->output, job.svg = args->svg;
     job.seed = args->seed;
     job.relax_sweeps = args->relax_sweeps;
+    job.threads = args->threads;
     action = [job] { return run_tune(job); };
   });
 }

@@ -50,6 +50,11 @@ const std::vector<SpaceGrid::Item>* SpaceGrid::items_of(std::uint64_t key) const
 }
 
 std::vector<SpaceGrid::Item>& SpaceGrid::items_at(std::uint64_t key) {
+  // A cell that exists is returned without touching the table (add_cells relies on it).
+  if (used_ > 0) {
+    Cell& cell = table_[slot_of(key)];
+    if (cell.key == key) return cell.items;
+  }
   if (2 * (used_ + 1) > table_.size()) {  // grow: at most half full keeps probes short
     std::vector<Cell> old(std::max<std::size_t>(64, 2 * table_.size()));
     old.swap(table_);
@@ -62,6 +67,22 @@ std::vector<SpaceGrid::Item>& SpaceGrid::items_at(std::uint64_t key) {
     ++used_;
   }
   return cell.items;
+}
+
+void SpaceGrid::add_cells(Vec3 q, double R) {
+  const std::int64_t i0 = coord(q.x - R), i1 = coord(q.x + R);
+  const std::int64_t j0 = coord(q.y - R), j1 = coord(q.y + R);
+  const std::int64_t k0 = coord(q.z - R), k1 = coord(q.z + R);
+  for (std::int64_t i = i0; i <= i1; ++i)
+    for (std::int64_t j = j0; j <= j1; ++j)
+      for (std::int64_t k = k0; k <= k1; ++k) items_at(pack(i, j, k));
+}
+
+bool SpaceGrid::keys_distinct_within(Vec3 lo, Vec3 hi) const {
+  // pack keeps 21 bits per axis: cells 2^21 apart share a key.
+  constexpr std::int64_t kDistinct = std::int64_t{1} << 21;
+  return coord(hi.x) - coord(lo.x) < kDistinct && coord(hi.y) - coord(lo.y) < kDistinct &&
+         coord(hi.z) - coord(lo.z) < kDistinct;
 }
 
 void SpaceGrid::remove(std::uint32_t id, Vec3 p) {
@@ -268,6 +289,11 @@ void SurfacePacking::move(DiskId id, const SurfacePoint& q) {
   radius_[id] = radius_at(q);
   patches_[id] = patches_for(q, flags_[id]);
   grid_.insert(id, q.p);
+}
+
+bool SurfacePacking::grid_cells_distinct() const {
+  const Vec3 margin{grid_.cell(), grid_.cell(), grid_.cell()};
+  return grid_.keys_distinct_within(domain().bbox_min() - margin, domain().bbox_max() + margin);
 }
 
 std::vector<DiskId> SurfacePacking::ids() const {

@@ -9,11 +9,15 @@
 // the circle whose diameter is the opposite edge, under the same rule, or where that
 // vertex cannot move, one of its two neighbours until the angle closes.
 #include <algorithm>
+#include <array>
+#include <atomic>
 #include <cmath>
 #include <functional>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
+#include "colour_blocks.h"
 #include "disktune/surface_tuning.h"
 #include "disktune/tuning.h"
 #include "space.h"
@@ -106,14 +110,62 @@ std::size_t sweep(P& packing, double spacing, Rng& rng, Steps<P>* last) {
   return moved;
 }
 
+// On a surface the disks move cube by cube (colour_blocks.h), the cubes of one colour at
+// once. What one disk's move reads lies within `read` of its center: the springs' reach,
+// the disks whose bisectors cut its cell and whose circles bound its void (twice its
+// radius), those it could meet at its new place; it writes its own entries and the grid
+// cells it leaves and enters, within `write` (a step is at most a quarter rest length,
+// and its projection onto the surface at most doubles it). A grid query reads whole cells
+// meeting its box, so cubes wider than read + write + two cells (two disks' cells then
+// differ) keep every write of one cube out of what any other cube of its colour reads or
+// writes. The cells a move can enter are made beforehand, so no move changes the grid's
+// table.
+std::size_t sweep(SurfacePacking& packing, double spacing, Rng& rng, Steps<SurfacePacking>* last,
+                  unsigned threads) {
+  std::vector<DiskId> order = packing.ids();
+  for (std::size_t i = order.size(); i > 1; --i)
+    std::swap(order[i - 1], order[uniform_index(rng, i)]);
+  const double r = packing.max_radius();
+  const double read = std::max({1.5 * spacing, 1 + 0.5 * spacing, 2.001}) * r;
+  const double write = 0.5 * spacing * r * 1.001;
+  const double cube = 1.01 * (read + write + 2 * packing.grid_cell() + write);
+  if (!packing.grid_cells_distinct()) threads = 1;
+  // The cubes shifted at random and the colours in a random order, each sweep: a disk's
+  // neighbours are not always moved before it, or always after.
+  const Vec3 origin{cube * uniform01(rng), cube * uniform01(rng), cube * uniform01(rng)};
+  const detail::ColourBlocks blocks = detail::colour_blocks(packing, order, cube, origin);
+  std::array<int, 8> colours{0, 1, 2, 3, 4, 5, 6, 7};
+  for (std::size_t i = colours.size(); i > 1; --i)
+    std::swap(colours[i - 1], colours[uniform_index(rng, i)]);
+  std::atomic<std::size_t> moved{0};
+  for (const int colour : colours) {
+    const auto& groups = blocks[colour];
+    if (threads > 1) {
+      for (const auto& group : groups)
+        for (const DiskId p : group) packing.add_grid_cells(packing.center(p), write);
+    }
+    detail::for_each_group(groups, threads, [&](const std::vector<DiskId>& group) {
+      std::size_t here = 0;
+      for (const DiskId p : group) here += relax_disk(packing, p, spacing, last);
+      moved += here;
+    });
+  }
+  return moved;
+}
+
 template <class P>
-std::size_t relax_in(P& packing, double spacing, int sweeps, Rng& rng, const std::function<bool(int)>& after_sweep) {
+std::size_t relax_in(P& packing, double spacing, int sweeps, Rng& rng,
+                     const std::function<bool(int)>& after_sweep, unsigned threads) {
   check_spacing(spacing);
   if (sweeps < 0) throw InvalidInput("relax: the number of sweeps must be 0 or more, got " + std::to_string(sweeps));
   Steps<P> last(packing.id_bound(), typename Steps<P>::value_type{});
   std::size_t moved = 0;
   for (int k = 0; k < sweeps; ++k) {
-    moved += sweep(packing, spacing, rng, &last);
+    if constexpr (std::is_same_v<P, SurfacePacking>) {
+      moved += sweep(packing, spacing, rng, &last, threads);
+    } else {
+      moved += sweep(packing, spacing, rng, &last);
+    }
     if (after_sweep && !after_sweep(k + 1)) break;
   }
   return moved;
@@ -126,18 +178,18 @@ std::size_t relax(Packing& packing, double spacing, Rng& rng) {
   return sweep(packing, spacing, rng, nullptr);
 }
 
-std::size_t relax(SurfacePacking& packing, double spacing, Rng& rng) {
+std::size_t relax(SurfacePacking& packing, double spacing, Rng& rng, unsigned threads) {
   check_spacing(spacing);
-  return sweep(packing, spacing, rng, nullptr);
+  return sweep(packing, spacing, rng, nullptr, detail::thread_count(threads));
 }
 
 std::size_t relax(Packing& packing, double spacing, int sweeps, Rng& rng, const std::function<bool(int)>& after_sweep) {
-  return relax_in(packing, spacing, sweeps, rng, after_sweep);
+  return relax_in(packing, spacing, sweeps, rng, after_sweep, 1);
 }
 
 std::size_t relax(SurfacePacking& packing, double spacing, int sweeps, Rng& rng,
-                  const std::function<bool(int)>& after_sweep) {
-  return relax_in(packing, spacing, sweeps, rng, after_sweep);
+                  const std::function<bool(int)>& after_sweep, unsigned threads) {
+  return relax_in(packing, spacing, sweeps, rng, after_sweep, detail::thread_count(threads));
 }
 
 std::size_t open_obtuse_angles(SurfacePacking& packing, const SurfaceMesh& mesh) {

@@ -91,10 +91,13 @@ std::optional<RemeshResult> remesh_at(const std::shared_ptr<const SurfaceDomain>
   const double spacing = 1 / relative_radius_for(eta);
   const Progress progress{packing.size(), eta, Phase::relaxation};
   bool cancelled = false;
-  relax(packing, spacing, options.relax_sweeps, rng, [&](int) {
-    cancelled = options.tune.on_progress && !options.tune.on_progress(progress);
-    return !cancelled;
-  });
+  relax(
+      packing, spacing, options.relax_sweeps, rng,
+      [&](int) {
+        cancelled = options.tune.on_progress && !options.tune.on_progress(progress);
+        return !cancelled;
+      },
+      options.threads);
   if (cancelled) throw Cancelled("remesh: cancelled by the progress callback during relaxation");
 
   out.mesh = restricted_delaunay(

@@ -1,0 +1,94 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Disks spread over threads by where they are (internal). Space is cut into cubes, and
+// the cubes coloured by the parity of their three indices: two cubes of one colour lie a
+// whole cube apart. Where a cube is wider than what one disk's operation reads and
+// writes can reach, the cubes of one colour can be worked on at once, and each disk sees
+// exactly what it would see were the cubes worked on one after another: the result is the
+// same for any number of threads.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <cmath>
+#include <cstdint>
+#include <exception>
+#include <map>
+#include <mutex>
+#include <system_error>
+#include <thread>
+#include <tuple>
+#include <vector>
+
+#include "disktune/surface_packing.h"
+
+namespace disktune::detail {
+
+/// One list of disks per cube, per colour.
+using ColourBlocks = std::array<std::vector<std::vector<DiskId>>, 8>;
+
+/// The disks of `order` grouped by the cube of side `block` holding their center (cubes
+/// with a corner at `origin`), each group in the order of `order`, the groups of a colour
+/// by their cube's indices.
+inline ColourBlocks colour_blocks(const SurfacePacking& packing, const std::vector<DiskId>& order,
+                                  double block, Vec3 origin) {
+  using Cube = std::tuple<std::int64_t, std::int64_t, std::int64_t>;
+  std::map<Cube, std::vector<DiskId>> cubes;
+  // Cubes beyond 2^52 of them share the outermost (as SpaceGrid::coord): only slower.
+  const auto index = [&](double v) {
+    constexpr double kFar = 4503599627370496.0;
+    const double c = std::floor(v / block);
+    return static_cast<std::int64_t>(c >= -kFar ? std::min(c, kFar) : -kFar);
+  };
+  for (const DiskId p : order) {
+    const Vec3 c = packing.center(p) - origin;
+    cubes[{index(c.x), index(c.y), index(c.z)}].push_back(p);
+  }
+  ColourBlocks out;
+  for (auto& [cube, disks] : cubes) {
+    const auto [i, j, k] = cube;
+    out[(i & 1) | (j & 1) << 1 | (k & 1) << 2].push_back(std::move(disks));
+  }
+  return out;
+}
+
+/// The number of threads asked for, 0 meaning one per core.
+inline unsigned thread_count(unsigned threads) {
+  return threads > 0 ? threads : std::max(1u, std::thread::hardware_concurrency());
+}
+
+/// work(group) for every group, on up to `threads` threads (the caller's among them),
+/// each group on one thread; the first exception thrown is rethrown once all stopped.
+template <class Work>
+void for_each_group(const std::vector<std::vector<DiskId>>& groups, unsigned threads, Work&& work) {
+  const unsigned n = std::min<unsigned>(threads, static_cast<unsigned>(groups.size()));
+  if (n <= 1) {
+    for (const auto& group : groups) work(group);
+    return;
+  }
+  std::atomic<std::size_t> next{0};
+  std::exception_ptr failure;
+  std::mutex failure_lock;
+  const auto run = [&] {
+    try {
+      for (std::size_t g; (g = next++) < groups.size();) work(groups[g]);
+    } catch (...) {
+      const std::lock_guard<std::mutex> hold(failure_lock);
+      if (!failure) failure = std::current_exception();
+      next = groups.size();  // the others stop after their group
+    }
+  };
+  std::vector<std::thread> pool;
+  for (unsigned t = 1; t < n; ++t) {
+    try {
+      pool.emplace_back(run);
+    } catch (const std::system_error&) {
+      break;  // fewer threads: the same result, later
+    }
+  }
+  run();
+  for (std::thread& t : pool) t.join();
+  if (failure) std::rethrow_exception(failure);
+}
+
+}  // namespace disktune::detail
