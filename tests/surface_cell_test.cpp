@@ -174,5 +174,58 @@ TEST(SurfaceCell, AMovedDiskInsideWhichItsCellLiesStillCoversWhatOnlyItCovered) 
   }
 }
 
+// TrianglesNearDisks keeps a disk's list until the disk has moved more than the slack:
+// after every move (small ones, which keep it, and large ones, which renew it), each
+// triangle with a point within reach of the disk's center must be in its list. Points
+// of a triangle: a barycentric grid (a triangle whose grid misses the ball by less than
+// the grid's spacing is not asked for).
+TEST(SurfaceCell, TheTrianglesNearADiskFollowItsMoves) {
+  const auto surface = test::surface_file("elephant.off");
+  const double r = 0.012, reach = r, slack = 0.5 * r;
+  Rng rng(5);
+  SurfacePacking p = sample_mps(surface, SurfaceSizing::constant(r), rng);
+  detail::TrianglesNearDisks near(p.id_bound(), reach, slack);
+  const std::vector<DiskId> ids = p.ids();
+  double longest = 0;
+  for (const auto& t : surface->triangles())
+    for (int k = 0; k < 3; ++k)
+      longest =
+          std::max(longest, norm(surface->vertices()[t[k]] - surface->vertices()[t[(k + 1) % 3]]));
+  std::mt19937_64 gen(5);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::size_t asked = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    const DiskId id = ids[static_cast<std::size_t>(u(gen) * static_cast<double>(ids.size()))];
+    for (int step = 0; step < 4; ++step) {
+      // Steps of up to 0.3 r (kept lists) and now and then 2 r (renewed ones).
+      const double length = (step == 3 ? 2.0 : 0.3) * r * u(gen);
+      const Vec3 dir{u(gen) - 0.5, u(gen) - 0.5, u(gen) - 0.5};
+      p.move(id, test::nearest_surface_point(p, p.center(id) + dir * (length / norm(dir))));
+      const std::vector<std::uint32_t>& listed = near.of(p, id);
+      const std::set<std::uint32_t> in(listed.begin(), listed.end());
+      const Vec3 c = p.center(id);
+      for (std::size_t t = 0; t < surface->triangles().size(); ++t) {
+        const auto& tri = surface->triangles()[t];
+        const Vec3 a = surface->vertices()[tri[0]], b = surface->vertices()[tri[1]],
+                   e = surface->vertices()[tri[2]];
+        if (norm(a - c) > reach + longest) continue;  // no point of it within reach
+        bool within = false;
+        constexpr int kGrid = 24;
+        for (int i = 0; i <= kGrid && !within; ++i)
+          for (int j = 0; i + j <= kGrid && !within; ++j) {
+            const Vec3 y = a + (b - a) * (double(i) / kGrid) + (e - a) * (double(j) / kGrid);
+            within = norm(y - c) <= reach;
+          }
+        if (!within) continue;
+        ++asked;
+        ASSERT_TRUE(in.count(static_cast<std::uint32_t>(t)))
+            << "trial " << trial << " step " << step << ": triangle " << t
+            << " comes within reach of disk " << id << " but is not in its list";
+      }
+    }
+  }
+  EXPECT_GT(asked, 1000u);
+}
+
 }  // namespace
 }  // namespace disktune

@@ -12,11 +12,14 @@
 #include <array>
 #include <atomic>
 #include <cmath>
+#include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <type_traits>
 #include <utility>
 #include <vector>
 
+#include "../voids/surface_cell.h"
 #include "colour_blocks.h"
 #include "disktune/surface_tuning.h"
 #include "disktune/tuning.h"
@@ -32,9 +35,11 @@ double spring(double w) { return w >= 1.5 ? 0.0 : (1.25 * w - 2.375) * w * w + 1
 // Moves disk p to `to` (put on the domain), or half or a quarter of the way, where it
 // meets no other disk and still holds everything only it covers (a void lies in the
 // convex hull of its points in each plane, and a disk is convex). Returns the part of
-// the way it went: 1, 0.5, 0.25, or 0 where none fits.
+// the way it went: 1, 0.5, 0.25, or 0 where none fits. `near_p`: the triangles near p,
+// where known (a surface's).
 template <class P>
-double move_toward(P& packing, DiskId p, typename detail::Space<P>::Location to) {
+double move_toward(P& packing, DiskId p, typename detail::Space<P>::Location to,
+                   const std::vector<std::uint32_t>* near_p = nullptr) {
   using S = detail::Space<P>;
   const auto c = packing.center(p);
   const double r = packing.radius(p);
@@ -43,7 +48,7 @@ double move_toward(P& packing, DiskId p, typename detail::Space<P>::Location to)
   for (int halvings = 0; halvings < 3; ++halvings, step = step * 0.5, part *= 0.5) {
     typename S::Point x;
     if (!S::project(packing, p, c + step, x) || packing.conflicts(x, p)) continue;
-    if (!S::covers_lifted_voids(packing, c, S::void_reach(r), p, x)) continue;
+    if (!S::covers_lifted_voids(packing, c, S::void_reach(r), p, x, near_p)) continue;
     detail::BasicUndoLog<P> log(packing);
     log.move(p, x);
     // With one radius covers_all is exact; with a sizing p's radius changed on the way.
@@ -64,8 +69,25 @@ constexpr double kMomentum = 0.5;
 template <class P>
 using Steps = std::vector<decltype(std::declval<P>().center(DiskId{}) - std::declval<P>().center(DiskId{}))>;
 
+// The triangles near each disk, kept from sweep to sweep (a surface's; none in the plane).
 template <class P>
-bool relax_disk(P& packing, DiskId p, double spacing, Steps<P>* last) {
+using NearTriangles = std::conditional_t<std::is_same_v<P, SurfacePacking>,
+                                         detail::TrianglesNearDisks, std::nullptr_t>;
+
+template <class P>
+NearTriangles<P> near_triangles(const P& packing) {
+  if constexpr (std::is_same_v<P, SurfacePacking>) {
+    // Lists a little wider than a ball, renewed after a move of half a radius: most
+    // disks keep theirs for a few sweeps.
+    const double r = packing.max_radius();
+    return detail::TrianglesNearDisks(packing.id_bound(), r * (1 + 1e-6), 0.5 * r);
+  } else {
+    return nullptr;
+  }
+}
+
+template <class P>
+bool relax_disk(P& packing, DiskId p, double spacing, Steps<P>* last, NearTriangles<P>& near) {
   using S = detail::Space<P>;
   if (packing.flags(p) & (kFixed | kFrozen)) return false;
   const auto c = packing.center(p);
@@ -90,7 +112,12 @@ bool relax_disk(P& packing, DiskId p, double spacing, Steps<P>* last) {
   if (last) (*last)[p] = step * 0.0;
   if (!(length > 1e-3 * rest)) return false;  // at rest already
   if (length > 0.25 * rest) step = step * (0.25 * rest / length);
-  const double part = move_toward(packing, p, c + step);
+  double part = 0;
+  if constexpr (std::is_same_v<P, SurfacePacking>) {
+    part = move_toward(packing, p, c + step, &near.of(packing, p));
+  } else {
+    part = move_toward(packing, p, c + step);
+  }
   if (last) (*last)[p] = step * part;
   return part > 0;
 }
@@ -102,11 +129,11 @@ void check_spacing(double spacing) {
 }
 
 template <class P>
-std::size_t sweep(P& packing, double spacing, Rng& rng, Steps<P>* last) {
+std::size_t sweep(P& packing, double spacing, Rng& rng, Steps<P>* last, NearTriangles<P>& near) {
   std::vector<DiskId> order = packing.ids();
   for (std::size_t i = order.size(); i > 1; --i) std::swap(order[i - 1], order[uniform_index(rng, i)]);
   std::size_t moved = 0;
-  for (const DiskId p : order) moved += relax_disk(packing, p, spacing, last);
+  for (const DiskId p : order) moved += relax_disk(packing, p, spacing, last, near);
   return moved;
 }
 
@@ -121,7 +148,7 @@ std::size_t sweep(P& packing, double spacing, Rng& rng, Steps<P>* last) {
 // writes. The cells a move can enter are made beforehand, so no move changes the grid's
 // table.
 std::size_t sweep(SurfacePacking& packing, double spacing, Rng& rng, Steps<SurfacePacking>* last,
-                  unsigned threads) {
+                  detail::TrianglesNearDisks& near, unsigned threads) {
   std::vector<DiskId> order = packing.ids();
   for (std::size_t i = order.size(); i > 1; --i)
     std::swap(order[i - 1], order[uniform_index(rng, i)]);
@@ -146,7 +173,7 @@ std::size_t sweep(SurfacePacking& packing, double spacing, Rng& rng, Steps<Surfa
     }
     detail::for_each_group(groups, threads, [&](const std::vector<DiskId>& group) {
       std::size_t here = 0;
-      for (const DiskId p : group) here += relax_disk(packing, p, spacing, last);
+      for (const DiskId p : group) here += relax_disk(packing, p, spacing, last, near);
       moved += here;
     });
   }
@@ -159,12 +186,13 @@ std::size_t relax_in(P& packing, double spacing, int sweeps, Rng& rng,
   check_spacing(spacing);
   if (sweeps < 0) throw InvalidInput("relax: the number of sweeps must be 0 or more, got " + std::to_string(sweeps));
   Steps<P> last(packing.id_bound(), typename Steps<P>::value_type{});
+  NearTriangles<P> near = near_triangles(packing);
   std::size_t moved = 0;
   for (int k = 0; k < sweeps; ++k) {
     if constexpr (std::is_same_v<P, SurfacePacking>) {
-      moved += sweep(packing, spacing, rng, &last, threads);
+      moved += sweep(packing, spacing, rng, &last, near, threads);
     } else {
-      moved += sweep(packing, spacing, rng, &last);
+      moved += sweep(packing, spacing, rng, &last, near);
     }
     if (after_sweep && !after_sweep(k + 1)) break;
   }
@@ -175,12 +203,14 @@ std::size_t relax_in(P& packing, double spacing, int sweeps, Rng& rng,
 
 std::size_t relax(Packing& packing, double spacing, Rng& rng) {
   check_spacing(spacing);
-  return sweep(packing, spacing, rng, nullptr);
+  std::nullptr_t near = nullptr;
+  return sweep(packing, spacing, rng, nullptr, near);
 }
 
 std::size_t relax(SurfacePacking& packing, double spacing, Rng& rng, unsigned threads) {
   check_spacing(spacing);
-  return sweep(packing, spacing, rng, nullptr, detail::thread_count(threads));
+  detail::TrianglesNearDisks near = near_triangles(packing);
+  return sweep(packing, spacing, rng, nullptr, near, detail::thread_count(threads));
 }
 
 std::size_t relax(Packing& packing, double spacing, int sweeps, Rng& rng, const std::function<bool(int)>& after_sweep) {

@@ -14,9 +14,10 @@
 //   voids_in(P, c, R, ignore)  the void points within R of c, `ignore` lifted
 //   void_choice(P, voids, rng) where a new disk goes: largest weighted diameter
 //   covers_all(P, x, voids)    a disk at x holds every void point
-//   covers_lifted_voids(P, c, R, p, x)  covers_all(P, x, voids_in(P, c, R, {p})): disk
-//                    p moved from c to x still holds its own void (on a surface without
-//                    listing the void points, much faster)
+//   covers_lifted_voids(P, c, R, p, x[, near_p])  covers_all(P, x, voids_in(P, c, R,
+//                    {p})): disk p moved from c to x still holds its own void (on a
+//                    surface without listing the void points, much faster; near_p: the
+//                    triangles near p, where known)
 //   mobile_neighbors(P, c, r, self, rng)  movable disks overlapping a disk (c, r)
 //   repair_void(log, P, c, R, rng, max)   fill the voids within R of c
 //   void_free_near(P, c, r)    no void within D(c, r): the exact check after a change
@@ -83,7 +84,9 @@ struct Space<Packing> {
   static bool covers_all(const Packing& packing, Point x, const std::vector<VoidPoint>& voids) {
     return detail::covers_all(packing, x, voids);
   }
-  static bool covers_lifted_voids(const Packing& packing, Location c, double R, DiskId p, Point x) {
+  static bool covers_lifted_voids(
+      const Packing& packing, Location c, double R, DiskId p, Point x,
+      const std::vector<std::uint32_t>* /*near_p: a surface's*/ = nullptr) {
     return detail::covers_all(packing, x, voids_in(packing, c, R, {p}));
   }
   // Planar radii follow the position (radius_at), so `r` is implied by c.
@@ -196,8 +199,10 @@ struct Space<SurfacePacking> {
   static bool covers_all(const SurfacePacking& packing, const Point& x, const std::vector<VoidPoint>& voids) {
     return detail::covers_all(packing, x, voids);
   }
-  static bool covers_lifted_voids(const SurfacePacking& packing, Location c, double R, DiskId p, const Point& x) {
-    return detail::covers_lifted_voids(packing, c, R, p, x);
+  static bool covers_lifted_voids(const SurfacePacking& packing, Location c, double R, DiskId p,
+                                  const Point& x,
+                                  const std::vector<std::uint32_t>* near_p = nullptr) {
+    return detail::covers_lifted_voids(packing, c, R, p, x, near_p);
   }
   static std::vector<Near> mobile_neighbors(const SurfacePacking& packing, Location c, double r, DiskId self,
                                             Rng& rng) {

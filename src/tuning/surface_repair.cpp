@@ -44,12 +44,13 @@ bool covers_all(const SurfacePacking& packing, const SurfacePoint& c, const std:
   return true;
 }
 
-bool covers_lifted_voids(const SurfacePacking& packing, Vec3 c, double R, DiskId p, const SurfacePoint& x) {
+bool covers_lifted_voids(const SurfacePacking& packing, Vec3 c, double R, DiskId p,
+                         const SurfacePoint& x, const std::vector<std::uint32_t>* near_p) {
   // Where p's cell lies in its ball at x, it still covers all that only it covered
   // (surface_cell.h), and no void points are needed: with one radius (with a sizing p's
   // radius changes on the way) and on p's own patch, by a margin above the rounding.
   if (packing.sizing().is_constant() && packing.patches_of(x) == packing.patches(p) &&
-      cell_inside(packing, p, x.p, packing.radius(p) * (1 - 1e-7)))
+      cell_inside(packing, p, x.p, packing.radius(p) * (1 - 1e-7), near_p))
     return true;
   return void_points_near_within(packing, c, R, {p}, holding_ball(packing, x));
 }

@@ -39,7 +39,9 @@ HoldingBall holding_ball(const SurfacePacking& packing, const SurfacePoint& c);
 /// x, voids_near(packing, c, R, {p})) at a fraction of its cost (void_points_near_within).
 /// The first can say yes where the second, which asks x to cover every void near c, would
 /// not: where the packing already had a void there that p did not cover.
-bool covers_lifted_voids(const SurfacePacking& packing, Vec3 c, double R, DiskId p, const SurfacePoint& x);
+/// `near_p`, where given, holds every triangle within p's ball (TrianglesNearDisks).
+bool covers_lifted_voids(const SurfacePacking& packing, Vec3 c, double R, DiskId p,
+                         const SurfacePoint& x, const std::vector<std::uint32_t>* near_p = nullptr);
 
 /// Positions within R of `near` where a disk covers every void point (covers_all) and
 /// conflicts with no disk but `self` and `passable`: the vertices of the arrangement of

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -48,7 +49,8 @@ double farthest2(const Polygon& poly, Vec3 from) {
 
 }  // namespace
 
-bool cell_inside(const SurfacePacking& packing, DiskId p, Vec3 x, double radius) {
+bool cell_inside(const SurfacePacking& packing, DiskId p, Vec3 x, double radius,
+                 const std::vector<std::uint32_t>* near_p) {
   const SurfaceIndex& index = packing.index();
   const Vec3 c = packing.center(p);
   // The ball where p can be the only cover (its radius with the coverage tolerance).
@@ -56,7 +58,7 @@ bool cell_inside(const SurfacePacking& packing, DiskId p, Vec3 x, double radius)
   thread_local std::vector<std::uint32_t> tris;
   thread_local std::vector<std::pair<double, DiskId>> near;  // squared distance, disk
   Polygon buffers[2];
-  index.triangles_near(c, R, tris);
+  if (!near_p) index.triangles_near(c, R, tris), near_p = &tris;
   near.clear();
   packing.for_each_near(c, 2 * R + packing.max_radius() * kRelTol, [&](DiskId q) {
     if (q != p) near.emplace_back(squared_norm(packing.center(q) - c), q);
@@ -66,7 +68,7 @@ bool cell_inside(const SurfacePacking& packing, DiskId p, Vec3 x, double radius)
   std::sort(near.begin(), near.end());
   const auto& corners = packing.domain().triangles();
   const auto& vertices = packing.domain().vertices();
-  for (const std::uint32_t t : tris) {
+  for (const std::uint32_t t : *near_p) {
     const PatchSet patch = index.patch_of_triangle(t);
     if (!packing.share_patch(packing.patches(p), patch)) continue;  // p covers nothing there
     if (squared_norm(index.closest_point(t, c) - c) > R * R) continue;
@@ -85,6 +87,21 @@ bool cell_inside(const SurfacePacking& packing, DiskId p, Vec3 x, double radius)
     if (farthest2(*poly, x) > radius * radius) return false;
   }
   return true;
+}
+
+TrianglesNearDisks::TrianglesNearDisks(DiskId id_bound, double reach, double slack)
+    : reach_(reach),
+      slack_(slack),
+      near_(id_bound),
+      found_at_(id_bound, Vec3{std::numeric_limits<double>::infinity(), 0, 0}) {}
+
+const std::vector<std::uint32_t>& TrianglesNearDisks::of(const SurfacePacking& packing, DiskId p) {
+  const Vec3 c = packing.center(p);
+  if (!(squared_norm(c - found_at_[p]) <= slack_ * slack_)) {
+    packing.index().triangles_near(c, reach_ + slack_, near_[p]);
+    found_at_[p] = c;
+  }
+  return near_[p];
 }
 
 }  // namespace disktune::detail
