@@ -214,6 +214,44 @@ TEST(RestrictedDelaunay, AMaximalPackingsCutDualEdgesKeepEveryTriangle) {
   }
 }
 
+// The dual edges are searched in chunks on several threads: the same mesh and the same
+// counts of each arithmetic's answers for any number of threads (more than the cores too),
+// with and without the search cut to a maximal packing's radius.
+TEST(RestrictedDelaunay, TheSameMeshOnAnyNumberOfThreads) {
+  for (const auto& [name, fraction, features] :
+       {std::tuple{"elephant.off", 0.01, 0.0}, std::tuple{"fandisk.off", 0.012, 60.0},
+        std::tuple{"mesh_with_border.off", 0.01, 0.0}}) {
+    SurfaceDomain s = surface(name);
+    if (features > 0) s.set_features(detect_features(s, {features, features, 0}));
+    const auto shared = std::make_shared<const SurfaceDomain>(std::move(s));
+    const std::vector<Vec3> samples = spread_samples(*shared, fraction * diagonal(*shared), 3);
+    const std::vector<std::uint32_t> patches(samples.size(), kAnyPatch);
+    Rng rng(3);
+    const SurfacePacking packing =
+        sample_mps(shared, SurfaceSizing::constant(fraction * diagonal(*shared)), rng);
+    SurfaceMesh first, first_cut;
+    detail::DualEdgeCounts first_counts;
+    for (const unsigned threads : {1u, 2u, 3u, 8u}) {
+      detail::DualEdgeCounts counts;
+      const SurfaceMesh mesh = detail::restricted_delaunay(
+          samples, *shared, patches, {}, detail::DualArithmetic::filtered, &counts, 0, threads);
+      const SurfaceMesh cut = restricted_delaunay(packing, Coverage::maximal, threads);
+      ASSERT_GT(mesh.triangles.size(), samples.size()) << name;
+      if (threads == 1) {
+        first = mesh, first_cut = cut, first_counts = counts;
+        continue;
+      }
+      EXPECT_EQ(mesh.triangles, first.triangles) << name << ", " << threads << " threads";
+      EXPECT_EQ(cut.triangles, first_cut.triangles) << name << ", " << threads << " threads";
+      EXPECT_EQ(cut.feature_edges, first_cut.feature_edges)
+          << name << ", " << threads << " threads";
+      EXPECT_EQ(counts.interval, first_counts.interval) << name;
+      EXPECT_EQ(counts.ring, first_counts.ring) << name;
+      EXPECT_EQ(counts.rational, first_counts.rational) << name;
+    }
+  }
+}
+
 // Samples on a grid on each face of a cube: four samples on a grid square are
 // cospherical and many circumcenters fall on a face's plane, where intervals and the
 // exact ring meet zeros and the rational constructions decide.

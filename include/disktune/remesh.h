@@ -44,7 +44,8 @@ struct RemeshOptions {
   /// The memory the job may use, in bytes; 0: what the process may still allocate
   /// (available_memory). A larger job is refused before any work (check_resources).
   double max_memory = 0;
-  /// Threads for relaxation (0: one per core); the mesh is the same for any number.
+  /// Threads for relaxation and the restricted Delaunay meshes (0: one per core); the
+  /// mesh is the same for any number.
   unsigned threads = 0;
 };
 

@@ -25,7 +25,8 @@ namespace disktune {
 /// not span a plane. The dual test is exact: many samples on one flat face make flat
 /// slivers whose circumcenters, rounded, land anywhere. Interval arithmetic settles
 /// almost every facet and exact arithmetic the rest; the whole costs 3-5 times CGAL's
-/// Delaunay triangulation of the samples (docs/benchmarks.md).
+/// Delaunay triangulation of the samples (docs/benchmarks.md), the search of the dual
+/// edges on every core (the mesh is the same for any number).
 SurfaceMesh restricted_delaunay(const std::vector<Vec3>& samples, const SurfaceDomain& surface);
 
 /// The same on a surface with sharp features, each sample's patch given
@@ -56,9 +57,11 @@ enum class Coverage { unknown, maximal };
 
 /// The mesh of a packing: vertex i is the i-th live disk (packing.ids() order); a fixed
 /// disk (on a feature curve or the open boundary) belongs to every patch, any other to
-/// the patch of the triangle it lies in.
+/// the patch of the triangle it lies in. The dual edges are searched on up to `threads`
+/// threads (0: one per core, as for the samples' overloads above); the mesh is the same
+/// for any number.
 SurfaceMesh restricted_delaunay(const SurfacePacking& packing,
-                                Coverage coverage = Coverage::unknown);
+                                Coverage coverage = Coverage::unknown, unsigned threads = 0);
 
 /// The symmetric Hausdorff distance between the mesh's triangles and the surface,
 /// approximated from below: `samples_per_mesh` area-weighted random points on each (and

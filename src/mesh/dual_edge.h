@@ -141,11 +141,12 @@ struct DualEdgeCounts {
 /// restricted_delaunay with the arithmetic chosen and the counts returned. With
 /// `covered_within` > 0 the caller vouches that every point of the surface lies within
 /// that distance of a sample: a dual edge is then searched only within it of its facet's
-/// corners (restricted_delaunay.h, Coverage::maximal).
+/// corners (restricted_delaunay.h, Coverage::maximal). The dual edges are searched on
+/// up to `threads` threads (0: one per core); the mesh is the same for any number.
 SurfaceMesh restricted_delaunay(const std::vector<Vec3>& samples, const SurfaceDomain& surface,
                                 const std::vector<std::uint32_t>& sample_patch,
                                 const std::vector<std::array<std::uint32_t, 2>>& feature_edges,
                                 DualArithmetic arithmetic, DualEdgeCounts* counts,
-                                double covered_within = 0);
+                                double covered_within = 0, unsigned threads = 0);
 
 }  // namespace disktune::detail

@@ -7,6 +7,8 @@
 // AABB tree over the input triangles answers that, exactly but mostly in interval
 // arithmetic (DualEdges below). The surface triangle it meets also tells which way the
 // mesh triangle should face.
+#include "disktune/restricted_delaunay.h"
+
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/AABB_triangle_primitive.h>
@@ -28,10 +30,10 @@
 #include <unordered_map>
 #include <utility>
 
+#include "../geometry/threads.h"
 #include "bow_tie_caps.h"
 #include "disktune/errors.h"
 #include "disktune/random.h"
-#include "disktune/restricted_delaunay.h"
 #include "dual_edge.h"
 #include "feature_chain.h"
 
@@ -377,8 +379,10 @@ class DualEdges {
   /// `reach` > 0: every point of the surface lies within it of a sample, so a point of
   /// the surface on a facet's dual edge (equally near its three corners, and no sample
   /// nearer) lies within it of the facet's corners; only that part of the edge is searched.
+  /// The searches that follow may run on several threads, each with its own Scratch;
+  /// `threads` find the triangles near each sample here.
   DualEdges(const Delaunay& dt, const std::vector<Vec3>& samples, const SurfaceDomain& surface,
-            detail::DualArithmetic arithmetic, double reach)
+            detail::DualArithmetic arithmetic, double reach, unsigned threads)
       : dt_(dt), samples_(samples), surface_(surface), arithmetic_(arithmetic), reach_(reach) {
     const std::vector<Vec3>& v = surface.vertices();
     for (const auto& t : surface.triangles()) triangles_.emplace_back(point(v[t[0]]), point(v[t[1]]), point(v[t[2]]));
@@ -401,16 +405,29 @@ class DualEdges {
         interval_boxes_.push_back(box_of(interval_centers_.back()));
       }
     }
+    if (reach_ > 0) find_triangles_near_samples(threads);
   }
 
+  /// What one thread's searches need of their own: caches of exact centers, the exact
+  /// tree (built on first use), lists, and the count of each arithmetic's answers.
+  struct Scratch {
+    std::unordered_map<std::uint32_t, detail::HomogeneousPoint<Ring>> ring_centers;
+    std::unordered_map<std::uint32_t, Exact::Point_3> exact_centers;
+    ExactTriangles exact_input;
+    std::unique_ptr<ExactTree> exact_tree;
+    std::vector<std::size_t> candidates;
+    std::vector<ExactTriangles::const_iterator> exact_hits;
+    detail::DualEdgeCounts counts;
+  };
+
   /// The indices of the surface triangles that the dual of f meets.
-  void hits(const Delaunay::Facet& f, std::vector<std::size_t>& out) {
+  void hits(const Delaunay::Facet& f, std::vector<std::size_t>& out, Scratch& s) const {
     if (arithmetic_ == detail::DualArithmetic::filtered) {
-      if (try_in<Interval>(f, out) != detail::Crossing::unsure) return void(++counts.interval);
-      if (try_in<Ring>(f, out) != detail::Crossing::unsure) return void(++counts.ring);
+      if (try_in<Interval>(f, out, s) != detail::Crossing::unsure) return void(++s.counts.interval);
+      if (try_in<Ring>(f, out, s) != detail::Crossing::unsure) return void(++s.counts.ring);
     }
-    rational(f, out);
-    ++counts.rational;
+    rational(f, out, s);
+    ++s.counts.rational;
   }
 
   /// The surface triangle nearest to f's centroid among `hits` (ties: the lower index).
@@ -424,8 +441,6 @@ class DualEdges {
     }
     return best;
   }
-
-  detail::DualEdgeCounts counts;
 
  private:
   Vec3 at(Delaunay::Cell_handle c, int k) const { return samples_[c->vertex(k)->info()]; }
@@ -444,33 +459,37 @@ class DualEdges {
 
   /// A box around a cell's circumcenter in NT.
   template <class NT>
-  PointBox box(Delaunay::Cell_handle c) {
+  PointBox box(Delaunay::Cell_handle c, Scratch& s) const {
     if constexpr (std::is_same_v<NT, Interval>) {
       return interval_boxes_[c->info()];
     } else {
-      return box_of(center<NT>(c));
+      return box_of(center<NT>(c, s));
     }
   }
 
   template <class NT>
-  const detail::HomogeneousPoint<NT>& center(Delaunay::Cell_handle c) {
+  const detail::HomogeneousPoint<NT>& center(Delaunay::Cell_handle c, Scratch& s) const {
     if constexpr (std::is_same_v<NT, Interval>) {
       return interval_centers_[c->info()];
     } else {
-      auto it = ring_centers_.find(c->info());
-      if (it == ring_centers_.end())
-        it = ring_centers_.emplace(c->info(), detail::circumcenter<Ring>(at(c, 0), at(c, 1), at(c, 2), at(c, 3))).first;
+      auto it = s.ring_centers.find(c->info());
+      if (it == s.ring_centers.end())
+        it = s.ring_centers
+                 .emplace(c->info(),
+                          detail::circumcenter<Ring>(at(c, 0), at(c, 1), at(c, 2), at(c, 3)))
+                 .first;
       return it->second;
     }
   }
 
   /// The dual of f tested in NT; `out` holds the hit triangles unless the answer is unsure.
   template <class NT>
-  detail::Crossing try_in(const Delaunay::Facet& f, std::vector<std::size_t>& out) {
+  detail::Crossing try_in(const Delaunay::Facet& f, std::vector<std::size_t>& out,
+                          Scratch& s) const {
     const Ends e = ends(f);
-    const detail::HomogeneousPoint<NT>& p = center<NT>(e.cell);
+    const detail::HomogeneousPoint<NT>& p = center<NT>(e.cell, s);
     if (!dt_.is_infinite(e.other)) {
-      const detail::HomogeneousPoint<NT>& q = center<NT>(e.other);
+      const detail::HomogeneousPoint<NT>& q = center<NT>(e.other, s);
       if constexpr (std::is_same_v<NT, Ring>) {
         // Four cospherical samples: the dual edge is a point, which meets the surface
         // with probability zero (the rational path skips it too).
@@ -479,8 +498,8 @@ class DualEdges {
           return detail::Crossing::miss;
         }
       }
-      return along<NT>(p, box<NT>(e.cell), q, box<NT>(e.other),
-                       e.cell->vertex((e.facet + 1) & 3)->info(), out);
+      return along<NT>(p, box<NT>(e.cell, s), q, box<NT>(e.other, s),
+                       e.cell->vertex((e.facet + 1) & 3)->info(), out, s);
     }
     // The ray, cut where it leaves the ball around the surface.
     const Vec3 a = at(e.cell, (e.facet + 1) & 3), b = at(e.cell, (e.facet + 2) & 3), c = at(e.cell, (e.facet + 3) & 3);
@@ -492,7 +511,7 @@ class DualEdges {
       out_dir = detail::cross(detail::minus(detail::vector_of<NT>(b), va), detail::minus(detail::vector_of<NT>(c), va));
       if (flip) out_dir = detail::scaled(out_dir, NT(-1));
     }
-    const PointBox from = box<NT>(e.cell);
+    const PointBox from = box<NT>(e.cell, s);
     double shortest = 0;  // a lower bound on |out_dir|
     {
       [[maybe_unused]] const RoundingFor<Interval> rounding;
@@ -511,7 +530,7 @@ class DualEdges {
       [[maybe_unused]] const RoundingFor<NT> rounding;
       q = detail::moved(p, out_dir, t);
     }
-    return along<NT>(p, from, q, box_of(q), e.cell->vertex((e.facet + 1) & 3)->info(), out);
+    return along<NT>(p, from, q, box_of(q), e.cell->vertex((e.facet + 1) & 3)->info(), out, s);
   }
 
   /// The triangles the segment pq meets, or unsure; bp and bq hold p and q, `corner`
@@ -519,7 +538,7 @@ class DualEdges {
   template <class NT>
   detail::Crossing along(const detail::HomogeneousPoint<NT>& p, const PointBox& bp,
                          const detail::HomogeneousPoint<NT>& q, const PointBox& bq,
-                         std::uint32_t corner, std::vector<std::size_t>& out) {
+                         std::uint32_t corner, std::vector<std::size_t>& out, Scratch& s) const {
     out.clear();
     if (!bp.finite() || !bq.finite()) return detail::Crossing::unsure;
     if (reach_ > 0) {
@@ -530,16 +549,16 @@ class DualEdges {
       const auto [u0, u1] = chord(bp, bq, {c.x, c.y, c.z}, reach_ * (1 + 1e-6));
       if (u0 > u1) return detail::Crossing::miss;
       const std::vector<std::uint32_t>* local =
-          std::is_same_v<NT, Interval> ? &triangles_near(corner) : nullptr;
+          std::is_same_v<NT, Interval> ? &near_sample_[corner] : nullptr;
       if (u0 > 0 || u1 < 1) {
         detail::HomogeneousPoint<NT> from, to;
         {
           [[maybe_unused]] const RoundingFor<NT> rounding;
           from = detail::between(p, q, u0), to = detail::between(p, q, u1);
         }
-        return along_inside(from, box_of(from), to, box_of(to), out, local);
+        return along_inside(from, box_of(from), to, box_of(to), out, s, local);
       }
-      return along_inside(p, bp, q, bq, out, local);
+      return along_inside(p, bp, q, bq, out, s, local);
     }
     if (!in_ball(bp) || !in_ball(bq)) {
       // A flat sliver's circumcenter can lie 10^16 away, where doubles say nothing about
@@ -552,10 +571,10 @@ class DualEdges {
           [[maybe_unused]] const RoundingFor<NT> rounding;
           from = detail::between(p, q, u0), to = detail::between(p, q, u1);
         }
-        return along_inside(from, box_of(from), to, box_of(to), out);
+        return along_inside(from, box_of(from), to, box_of(to), out, s);
       }
     }
-    return along_inside(p, bp, q, bq, out);
+    return along_inside(p, bp, q, bq, out, s);
   }
 
   bool in_ball(const PointBox& b) const {
@@ -586,22 +605,20 @@ class DualEdges {
     return {std::max(0.0, (nearest - reach).inf()), std::min(1.0, (nearest + reach).sup())};
   }
 
-  /// The surface triangles whose boxes come within 1.5 reach (plus the largest pad an
-  /// interval search allows) of sample s, once per sample: a crossing of a dual edge of
-  /// a facet at s lies within reach of s, so these hold every triangle it can be on.
-  const std::vector<std::uint32_t>& triangles_near(std::uint32_t s) {
-    if (near_sample_.empty())
-      near_sample_.resize(samples_.size()), near_known_.resize(samples_.size());
-    if (!near_known_[s]) {
-      const Vec3 c = samples_[s];
-      const double w = 1.5 * reach_ * (1 + 1e-6) + 2e-3 * ball_radius_ + 1e-14 * scale_;
-      NearSegment box{{c.x, c.y, c.z}, {0, 0, 0}, w, triangles_.begin(), &candidates_};
-      candidates_.clear();
+  /// For each sample, the surface triangles whose boxes come within 1.5 reach (plus the
+  /// largest pad an interval search allows) of it: a crossing of a dual edge of a facet
+  /// at the sample lies within reach of it, so these hold every triangle it can be on.
+  void find_triangles_near_samples(unsigned threads) {
+    near_sample_.resize(samples_.size());
+    std::vector<std::vector<std::size_t>> found(threads);
+    const double w = 1.5 * reach_ * (1 + 1e-6) + 2e-3 * ball_radius_ + 1e-14 * scale_;
+    detail::parallel_for(samples_.size(), threads, [&](std::size_t i, unsigned thread) {
+      const Vec3 c = samples_[i];
+      NearSegment box{{c.x, c.y, c.z}, {0, 0, 0}, w, triangles_.begin(), &found[thread]};
+      found[thread].clear();
       tree_.traversal(point(c), box);
-      near_sample_[s].assign(candidates_.begin(), candidates_.end());
-      near_known_[s] = true;
-    }
-    return near_sample_[s];
+      near_sample_[i].assign(found[thread].begin(), found[thread].end());
+    });
   }
 
   /// along() for a segment that the caller has cut to the ball where needed; with
@@ -609,21 +626,24 @@ class DualEdges {
   template <class NT>
   detail::Crossing along_inside(const detail::HomogeneousPoint<NT>& p, const PointBox& bp,
                                 const detail::HomogeneousPoint<NT>& q, const PointBox& bq,
-                                std::vector<std::size_t>& out,
-                                const std::vector<std::uint32_t>* local = nullptr) {
+                                std::vector<std::size_t>& out, Scratch& s,
+                                const std::vector<std::uint32_t>* local = nullptr) const {
     if (!bp.finite() || !bq.finite()) return detail::Crossing::unsure;
     const Point a = bp.middle(), b = bq.middle();
-    NearSegment near{{a.x(), a.y(), a.z()}, {b.x() - a.x(), b.y() - a.y(), b.z() - a.z()}, 0, triangles_.begin(),
-                     &candidates_};
+    NearSegment near{{a.x(), a.y(), a.z()},
+                     {b.x() - a.x(), b.y() - a.y(), b.z() - a.z()},
+                     0,
+                     triangles_.begin(),
+                     &s.candidates};
     double extent = scale_;
     for (int k = 0; k < 3; ++k) extent = std::max({extent, std::abs(a[k]), std::abs(b[k])});
     near.pad = 2 * std::max(bp.width(), bq.width()) + 1e-14 * extent;
     // Too vague to be worth a search: the next arithmetic will be sharper.
     if (std::is_same_v<NT, Interval> && near.pad > 1e-3 * ball_radius_) return detail::Crossing::unsure;
-    candidates_.clear();
+    s.candidates.clear();
     if (local) {
       for (const std::uint32_t k : *local)
-        if (near.near(boxes_[k])) candidates_.push_back(k);
+        if (near.near(boxes_[k])) s.candidates.push_back(k);
     } else {
       tree_.traversal(a, near);
     }
@@ -633,7 +653,7 @@ class DualEdges {
     detail::HomogeneousPoint<Interval> p_near, q_near;
     if constexpr (std::is_same_v<NT, Ring>) p_near = rounded(p), q_near = rounded(q);
     const std::vector<Vec3>& v = surface_.vertices();
-    for (const std::size_t k : candidates_) {
+    for (const std::size_t k : s.candidates) {
       const auto& t = surface_.triangles()[k];
       detail::Crossing c;
       if constexpr (std::is_same_v<NT, Ring>) {
@@ -656,34 +676,39 @@ class DualEdges {
   }
 
   /// The dual built and tested in rational arithmetic (Epeck), the tree built on first use.
-  void rational(const Delaunay::Facet& f, std::vector<std::size_t>& out) {
-    if (!exact_tree_) {
+  void rational(const Delaunay::Facet& f, std::vector<std::size_t>& out, Scratch& s) const {
+    if (!s.exact_tree) {
       const std::vector<Vec3>& v = surface_.vertices();
-      for (const auto& t : surface_.triangles()) exact_input_.emplace_back(exact(v[t[0]]), exact(v[t[1]]), exact(v[t[2]]));
-      exact_tree_ = std::make_unique<ExactTree>(exact_input_.begin(), exact_input_.end());
+      for (const auto& t : surface_.triangles())
+        s.exact_input.emplace_back(exact(v[t[0]]), exact(v[t[1]]), exact(v[t[2]]));
+      s.exact_tree = std::make_unique<ExactTree>(s.exact_input.begin(), s.exact_input.end());
     }
     const Ends e = ends(f);
-    exact_hits_.clear();
+    s.exact_hits.clear();
     if (!dt_.is_infinite(e.other)) {
-      const Exact::Segment_3 dual(exact_center(e.cell), exact_center(e.other));
+      const Exact::Segment_3 dual(exact_center(e.cell, s), exact_center(e.other, s));
       // AABB segment queries need a proper segment (and a point is missed anyway).
-      if (!dual.is_degenerate()) exact_tree_->all_intersected_primitives(dual, std::back_inserter(exact_hits_));
+      if (!dual.is_degenerate())
+        s.exact_tree->all_intersected_primitives(dual, std::back_inserter(s.exact_hits));
     } else {
       const Exact::Point_3 p = exact(at(e.cell, (e.facet + 1) & 3)), q = exact(at(e.cell, (e.facet + 2) & 3)),
                            r = exact(at(e.cell, (e.facet + 3) & 3)), inside = exact(at(e.cell, e.facet));
       Exact::Vector_3 dir = CGAL::cross_product(q - p, r - p);
       if (CGAL::orientation(p, q, r, inside) == CGAL::POSITIVE) dir = -dir;
-      exact_tree_->all_intersected_primitives(Exact::Ray_3(exact_center(e.cell), dir), std::back_inserter(exact_hits_));
+      s.exact_tree->all_intersected_primitives(Exact::Ray_3(exact_center(e.cell, s), dir),
+                                               std::back_inserter(s.exact_hits));
     }
     out.clear();
-    for (const auto h : exact_hits_) out.push_back(static_cast<std::size_t>(h - exact_input_.begin()));
+    for (const auto h : s.exact_hits)
+      out.push_back(static_cast<std::size_t>(h - s.exact_input.begin()));
   }
 
-  const Exact::Point_3& exact_center(Delaunay::Cell_handle c) {
-    auto it = exact_centers_.find(c->info());
-    if (it == exact_centers_.end()) {
-      it = exact_centers_
-               .emplace(c->info(), CGAL::circumcenter(exact(at(c, 0)), exact(at(c, 1)), exact(at(c, 2)), exact(at(c, 3))))
+  const Exact::Point_3& exact_center(Delaunay::Cell_handle c, Scratch& s) const {
+    auto it = s.exact_centers.find(c->info());
+    if (it == s.exact_centers.end()) {
+      it = s.exact_centers
+               .emplace(c->info(), CGAL::circumcenter(exact(at(c, 0)), exact(at(c, 1)),
+                                                      exact(at(c, 2)), exact(at(c, 3))))
                .first;
     }
     return it->second;
@@ -696,19 +721,13 @@ class DualEdges {
   double reach_;            // 0: the samples' coverage is not known
   TriangleList triangles_;  // every surface triangle, in order (zero-area ones too)
   std::vector<CGAL::Bbox_3> boxes_;                      // their bounding boxes
-  std::vector<std::vector<std::uint32_t>> near_sample_;  // triangles_near, per sample
-  std::vector<bool> near_known_;
+  std::vector<std::vector<std::uint32_t>>
+      near_sample_;  // with a reach: find_triangles_near_samples
   Tree tree_;
   std::array<double, 3> ball_center_{};
   double ball_radius_ = 0, scale_ = 1;
   std::vector<detail::HomogeneousPoint<Interval>> interval_centers_;
   std::vector<PointBox> interval_boxes_;
-  std::unordered_map<std::uint32_t, detail::HomogeneousPoint<Ring>> ring_centers_;
-  std::unordered_map<std::uint32_t, Exact::Point_3> exact_centers_;
-  ExactTriangles exact_input_;
-  std::unique_ptr<ExactTree> exact_tree_;
-  std::vector<std::size_t> candidates_;
-  std::vector<ExactTriangles::const_iterator> exact_hits_;
 };
 
 }  // namespace
@@ -717,7 +736,8 @@ SurfaceMesh restricted_delaunay(const std::vector<Vec3>& samples, const SurfaceD
   return restricted_delaunay(samples, surface, std::vector<std::uint32_t>(samples.size(), kAnyPatch), {});
 }
 
-SurfaceMesh restricted_delaunay(const SurfacePacking& packing, Coverage coverage) {
+SurfaceMesh restricted_delaunay(const SurfacePacking& packing, Coverage coverage,
+                                unsigned threads) {
   std::vector<Vec3> samples;
   std::vector<std::uint32_t> patch;
   for (const DiskId id : packing.ids()) {
@@ -728,7 +748,7 @@ SurfaceMesh restricted_delaunay(const SurfacePacking& packing, Coverage coverage
   const auto along_features = detail::feature_neighbours(packing);
   SurfaceMesh mesh = detail::restricted_delaunay(
       samples, packing.domain(), patch, along_features, detail::DualArithmetic::filtered, nullptr,
-      coverage == Coverage::maximal ? packing.max_radius() : 0);
+      coverage == Coverage::maximal ? packing.max_radius() : 0, threads);
   // The feature curves' consecutive disks that the mesh joins.
   std::set<std::pair<std::uint32_t, std::uint32_t>> edges;
   for (const auto& t : mesh.triangles)
@@ -749,7 +769,7 @@ SurfaceMesh detail::restricted_delaunay(
     const std::vector<Vec3>& samples, const SurfaceDomain& surface,
     const std::vector<std::uint32_t>& sample_patch,
     const std::vector<std::array<std::uint32_t, 2>>& feature_edges, DualArithmetic arithmetic,
-    DualEdgeCounts* counts, double covered_within) {
+    DualEdgeCounts* counts, double covered_within, unsigned threads) {
   check_samples(samples);
   if (sample_patch.size() != samples.size()) {
     throw InvalidInput("restricted_delaunay: " + std::to_string(sample_patch.size()) + " patches for " +
@@ -773,14 +793,15 @@ SurfaceMesh detail::restricted_delaunay(
     throw InvalidInput("restricted_delaunay: the " + std::to_string(samples.size()) +
                        " samples lie on one line; sample the whole surface");
   }
-  DualEdges duals(dt, samples, surface, arithmetic, covered_within);
+  threads = thread_count(threads);
+  DualEdges duals(dt, samples, surface, arithmetic, covered_within, threads);
   const std::vector<Vec3>& sv = surface.vertices();
   SurfaceMesh mesh;
   mesh.vertices = samples;
-  std::vector<std::size_t> hits;
-  // Keeps facet f if its dual meets the surface, facing the way of the hit surface
-  // triangle nearest to it (a long dual edge may cross the surface more than once).
-  const auto keep = [&](const Delaunay::Facet& f) {
+  // Keeps facet f, given the surface triangles its dual meets, facing the way of the hit
+  // surface triangle nearest to it (a long dual edge may cross the surface more than once).
+  const auto keep = [&](const Delaunay::Facet& f, const std::vector<std::size_t>& hits,
+                        std::vector<std::array<std::uint32_t, 3>>& kept) {
     if (hits.empty()) return;
     std::array<std::uint32_t, 3> t;
     for (int k = 0; k < 3; ++k) t[k] = f.first->vertex((f.second + 1 + k) & 3)->info();
@@ -789,7 +810,7 @@ SurfaceMesh detail::restricted_delaunay(
     // The smallest index first (orientation kept), so the output does not depend on
     // how the triangulation happens to store its cells.
     std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
-    mesh.triangles.push_back(t);
+    kept.push_back(t);
   };
 
   if (dt.dimension() == 2) {
@@ -799,6 +820,7 @@ SurfaceMesh detail::restricted_delaunay(
     for (const auto& t : surface.triangles()) input.emplace_back(exact(sv[t[0]]), exact(sv[t[1]]), exact(sv[t[2]]));
     const ExactTree tree(input.begin(), input.end());
     std::vector<std::vector<Exact::Triangle_3>::const_iterator> found;
+    std::vector<std::size_t> hits;
     const auto exact_point = [&](Delaunay::Vertex_handle v) { return exact(samples[v->info()]); };
     for (auto f = dt.finite_facets_begin(); f != dt.finite_facets_end(); ++f) {
       const Exact::Point_3 a = exact_point(f->first->vertex(0)), b = exact_point(f->first->vertex(1)),
@@ -808,15 +830,33 @@ SurfaceMesh detail::restricted_delaunay(
                                       std::back_inserter(found));
       hits.clear();
       for (const auto h : found) hits.push_back(static_cast<std::size_t>(h - input.cbegin()));
-      keep(*f);
+      keep(*f, hits, mesh.triangles);
     }
   } else {
-    for (auto f = dt.finite_facets_begin(); f != dt.finite_facets_end(); ++f) {
-      duals.hits(*f, hits);
-      keep(*f);
+    // The facets in chunks on the threads, each with its own scratch; the kept triangles
+    // are sorted below, so the mesh is the same for any number of threads.
+    const std::vector<Delaunay::Facet> facets(dt.finite_facets_begin(), dt.finite_facets_end());
+    constexpr std::size_t kChunk = 2048;
+    const std::size_t chunks = (facets.size() + kChunk - 1) / kChunk;
+    std::vector<DualEdges::Scratch> scratch(threads);
+    std::vector<std::vector<std::size_t>> hits(threads);
+    std::vector<std::vector<std::array<std::uint32_t, 3>>> kept(chunks);
+    parallel_for(chunks, threads, [&](std::size_t chunk, unsigned thread) {
+      for (std::size_t i = chunk * kChunk; i < std::min(facets.size(), (chunk + 1) * kChunk); ++i) {
+        duals.hits(facets[i], hits[thread], scratch[thread]);
+        keep(facets[i], hits[thread], kept[chunk]);
+      }
+    });
+    for (const auto& part : kept)
+      mesh.triangles.insert(mesh.triangles.end(), part.begin(), part.end());
+    if (counts) {
+      *counts = {};
+      for (const DualEdges::Scratch& one : scratch) {
+        counts->interval += one.counts.interval, counts->ring += one.counts.ring;
+        counts->rational += one.counts.rational;
+      }
     }
   }
-  if (counts) *counts = duals.counts;
   cap_fans_across_creases(mesh, feature_edges);
   drop_crossings(mesh, sample_patch);
   drop_flaps(mesh, sample_patch, surface.is_closed());

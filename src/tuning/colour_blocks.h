@@ -9,17 +9,13 @@
 
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <cmath>
 #include <cstdint>
-#include <exception>
 #include <map>
-#include <mutex>
-#include <system_error>
-#include <thread>
 #include <tuple>
 #include <vector>
 
+#include "../geometry/threads.h"
 #include "disktune/surface_packing.h"
 
 namespace disktune::detail {
@@ -52,43 +48,10 @@ inline ColourBlocks colour_blocks(const SurfacePacking& packing, const std::vect
   return out;
 }
 
-/// The number of threads asked for, 0 meaning one per core.
-inline unsigned thread_count(unsigned threads) {
-  return threads > 0 ? threads : std::max(1u, std::thread::hardware_concurrency());
-}
-
-/// work(group) for every group, on up to `threads` threads (the caller's among them),
-/// each group on one thread; the first exception thrown is rethrown once all stopped.
+/// work(group) for every group, on up to `threads` threads (parallel_for).
 template <class Work>
 void for_each_group(const std::vector<std::vector<DiskId>>& groups, unsigned threads, Work&& work) {
-  const unsigned n = std::min<unsigned>(threads, static_cast<unsigned>(groups.size()));
-  if (n <= 1) {
-    for (const auto& group : groups) work(group);
-    return;
-  }
-  std::atomic<std::size_t> next{0};
-  std::exception_ptr failure;
-  std::mutex failure_lock;
-  const auto run = [&] {
-    try {
-      for (std::size_t g; (g = next++) < groups.size();) work(groups[g]);
-    } catch (...) {
-      const std::lock_guard<std::mutex> hold(failure_lock);
-      if (!failure) failure = std::current_exception();
-      next = groups.size();  // the others stop after their group
-    }
-  };
-  std::vector<std::thread> pool;
-  for (unsigned t = 1; t < n; ++t) {
-    try {
-      pool.emplace_back(run);
-    } catch (const std::system_error&) {
-      break;  // fewer threads: the same result, later
-    }
-  }
-  run();
-  for (std::thread& t : pool) t.join();
-  if (failure) std::rethrow_exception(failure);
+  parallel_for(groups.size(), threads, [&](std::size_t g, unsigned) { work(groups[g]); });
 }
 
 }  // namespace disktune::detail

@@ -100,8 +100,8 @@ std::optional<RemeshResult> remesh_at(const std::shared_ptr<const SurfaceDomain>
       options.threads);
   if (cancelled) throw Cancelled("remesh: cancelled by the progress callback during relaxation");
 
-  out.mesh = restricted_delaunay(
-      packing, Coverage::maximal);  // tune, relax and open_obtuse_angles keep it so
+  // tune, relax and open_obtuse_angles keep the packing maximal
+  out.mesh = restricted_delaunay(packing, Coverage::maximal, options.threads);
   // Relaxation leaves about one triangle in a hundred obtuse: open those angles, in three
   // passes over one mesh (a move can leave an angle nearby still obtuse, which the next
   // pass sees at the disks' new places), then mesh again; twice. Measured at 10^4 and
@@ -112,7 +112,7 @@ std::optional<RemeshResult> remesh_at(const std::shared_ptr<const SurfaceDomain>
     std::size_t moved = 0;
     for (int pass = 0; pass < 3; ++pass) moved += open_obtuse_angles(packing, out.mesh);
     if (moved == 0) break;
-    out.mesh = restricted_delaunay(packing, Coverage::maximal);
+    out.mesh = restricted_delaunay(packing, Coverage::maximal, options.threads);
   }
   out.check = check_surface_mesh(out.mesh);
   // The check advises a sampler's user; remesh's denser samples are more vertices.

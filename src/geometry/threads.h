@@ -1,0 +1,59 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Work spread over threads (internal): how many threads a count asks for, and a loop
+// that hands items out one at a time to that many threads. Callers make each item's
+// result independent of which thread ran it, so results do not depend on the count.
+#pragma once
+
+#include <algorithm>
+#include <atomic>
+#include <cstddef>
+#include <exception>
+#include <mutex>
+#include <system_error>
+#include <thread>
+#include <vector>
+
+namespace disktune::detail {
+
+/// The number of threads asked for, 0 meaning one per core.
+inline unsigned thread_count(unsigned threads) {
+  return threads > 0 ? threads : std::max(1u, std::thread::hardware_concurrency());
+}
+
+/// work(item, thread) for every item in [0, count), on up to `threads` threads (the
+/// caller's among them; `thread` in [0, threads) names the one running it, for scratch
+/// space of its own). The first exception thrown is rethrown once all have stopped;
+/// the other threads stop after their current item.
+template <class Work>
+void parallel_for(std::size_t count, unsigned threads, Work&& work) {
+  const auto n = static_cast<unsigned>(std::min<std::size_t>(std::max(threads, 1u), count));
+  if (n <= 1) {
+    for (std::size_t i = 0; i < count; ++i) work(i, 0u);
+    return;
+  }
+  std::atomic<std::size_t> next{0};
+  std::exception_ptr failure;
+  std::mutex failure_lock;
+  const auto run = [&](unsigned thread) {
+    try {
+      for (std::size_t i; (i = next++) < count;) work(i, thread);
+    } catch (...) {
+      const std::lock_guard<std::mutex> hold(failure_lock);
+      if (!failure) failure = std::current_exception();
+      next = count;
+    }
+  };
+  std::vector<std::thread> pool;
+  for (unsigned t = 1; t < n; ++t) {
+    try {
+      pool.emplace_back(run, t);
+    } catch (const std::system_error&) {
+      break;  // fewer threads: the same result, later
+    }
+  }
+  run(0);
+  for (std::thread& t : pool) t.join();
+  if (failure) std::rethrow_exception(failure);
+}
+
+}  // namespace disktune::detail
