@@ -6,8 +6,11 @@
 // oracles judge what is handed back.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdio>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "disktune/planar_domain.h"
 #include "disktune/sampling.h"
@@ -117,6 +120,89 @@ TEST(FinalCheck, PackingDefectNamesTheCheckAndThePlace) {
   on_sphere.insert(on_sphere.point(on_sphere.ids()[3]));  // a second disk on one center
   EXPECT_TRUE(mentions(packing_defect(on_sphere), "cover each other's centers (a conflict)"))
       << packing_defect(on_sphere);
+}
+
+// The checks search on every core but name what a search in order would: the first disk
+// (in id order) with a corner on its circle, the first disk in a conflict, the first
+// triangle holding a void point, with defects spread over many chunks of the search.
+// Asked ten times each, the answer never changes.
+TEST(FinalCheck, TheFirstDefectInOrderIsNamedWhateverTheCores) {
+  const PeriodicBox box(1, 1);
+  Rng rng(8);
+  const double r = 0.01;
+  Packing holes = sample_mps(box, r, rng);
+  const std::vector<DiskId> ids = holes.ids();
+  ASSERT_GT(ids.size(), 5000u);
+  for (const std::size_t k : {ids.size() - 3, ids.size() / 2 + 11, ids.size() / 3 + 300, 1500ul})
+    holes.remove(ids[k]);
+  // In order: the first disk with an uncovered corner on its circle (corners_on_circle),
+  // its first corner; the oracle confirms no disk covers that point.
+  std::string expected;
+  Vec2 expected_at{};
+  for (const DiskId id : holes.ids()) {
+    std::vector<Corner> corners;
+    corners_on_circle(holes, id, corners);
+    if (corners.empty()) continue;
+    const Vec2 at = box.wrap(corners.front().point);
+    for (const DiskId other : holes.ids()) {
+      const Vec2 d = box.wrap(holes.center(other) - at + Vec2{0.5, 0.5}) - Vec2{0.5, 0.5};
+      ASSERT_GE(std::sqrt(d.x * d.x + d.y * d.y), r * (1 - 1e-9))
+          << "disk " << other << " covers the corner";
+    }
+    expected = "not maximal: the point (", expected_at = at;
+    break;
+  }
+  ASSERT_FALSE(expected.empty());
+  const std::string first = packing_defect(holes);
+  double hx = 0, hy = 0;
+  ASSERT_EQ(std::sscanf(first.c_str(), "not maximal: the point (%lf, %lf)", &hx, &hy), 2) << first;
+  EXPECT_EQ(hx, expected_at.x) << first;
+  EXPECT_EQ(hy, expected_at.y) << first;
+  for (int k = 0; k < 10; ++k) EXPECT_EQ(packing_defect(holes), first);
+
+  // Conflicts: disks put on the centers of disks far apart in id order; the first named
+  // is the first id, in id order, with another disk closer than r (brute force).
+  Packing crowded = sample_mps(box, r, rng);
+  const std::vector<DiskId> before = crowded.ids();
+  for (const std::size_t k : {before.size() - 5, before.size() / 2, 1300ul, 700ul})
+    crowded.insert(box.wrap(crowded.center(before[k]) + Vec2{0.1 * r, 0}), r);
+  DiskId first_in_conflict = kNoDisk;
+  for (const DiskId a : crowded.ids()) {
+    for (const DiskId b : crowded.ids()) {
+      if (a == b) continue;
+      const Vec2 d =
+          box.wrap(crowded.center(b) - crowded.center(a) + Vec2{0.5, 0.5}) - Vec2{0.5, 0.5};
+      if (std::sqrt(d.x * d.x + d.y * d.y) < r * (1 - 1e-9)) first_in_conflict = a;
+      if (first_in_conflict != kNoDisk) break;
+    }
+    if (first_in_conflict != kNoDisk) break;
+  }
+  ASSERT_NE(first_in_conflict, kNoDisk);
+  const std::string conflict = packing_defect(crowded);
+  EXPECT_TRUE(mentions(conflict, "cover each other's centers")) << conflict;
+  double x = 0, y = 0;  // every digit is printed: the center reads back exactly
+  ASSERT_EQ(std::sscanf(conflict.c_str(), "the disks centered at (%lf, %lf)", &x, &y), 2)
+      << conflict;
+  EXPECT_EQ(x, crowded.center(first_in_conflict).x) << conflict;
+  EXPECT_EQ(y, crowded.center(first_in_conflict).y) << conflict;
+  for (int k = 0; k < 10; ++k) EXPECT_EQ(packing_defect(crowded), conflict);
+
+  // A surface: the first triangle, in index order, holding a void point.
+  const auto elephant = test::surface_file("elephant.off");
+  SurfacePacking lifted = sample_mps(elephant, SurfaceSizing::constant(0.01), rng);
+  const std::vector<DiskId> on = lifted.ids();
+  for (const std::size_t k : {on.size() - 2, on.size() / 2, 900ul}) lifted.remove(on[k]);
+  std::size_t first_triangle = elephant->triangles().size();
+  for (std::size_t t = 0;
+       t < elephant->triangles().size() && first_triangle == elephant->triangles().size(); ++t) {
+    std::vector<SurfaceVoidPoint> found;
+    void_points_in_triangle(lifted, t, {}, found);
+    if (!found.empty()) first_triangle = t;
+  }
+  ASSERT_LT(first_triangle, elephant->triangles().size());
+  const std::string hole = packing_defect(lifted);
+  EXPECT_TRUE(mentions(hole, " of triangle " + std::to_string(first_triangle) + " ")) << hole;
+  for (int k = 0; k < 10; ++k) EXPECT_EQ(packing_defect(lifted), hole);
 }
 
 }  // namespace

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Work spread over threads (internal): how many threads a count asks for, and a loop
-// that hands items out one at a time to that many threads. Callers make each item's
-// result independent of which thread ran it, so results do not depend on the count.
+// Work spread over threads (internal): how many threads a count asks for, a loop that
+// hands items out one at a time to that many threads, and the first item a test holds
+// for. Callers make each item's result independent of which thread ran it, so results
+// do not depend on the count.
 #pragma once
 
 #include <algorithm>
@@ -54,6 +55,25 @@ void parallel_for(std::size_t count, unsigned threads, Work&& work) {
   run(0);
   for (std::thread& t : pool) t.join();
   if (failure) std::rethrow_exception(failure);
+}
+
+/// The smallest i in [0, count) for which found(i) holds, or `count` where none does:
+/// items in chunks on up to `threads` threads, each chunk in order, a chunk skipped
+/// once a smaller i is known. The answer is the one a plain loop would give.
+template <class Found>
+std::size_t first_index(std::size_t count, unsigned threads, Found&& found) {
+  constexpr std::size_t kChunk = 256;
+  std::atomic<std::size_t> best{count};
+  parallel_for((count + kChunk - 1) / kChunk, threads, [&](std::size_t chunk, unsigned) {
+    const std::size_t end = std::min(count, (chunk + 1) * kChunk);
+    for (std::size_t i = chunk * kChunk; i < end && i < best.load(); ++i) {
+      if (!found(i)) continue;
+      for (std::size_t seen = best.load(); i < seen && !best.compare_exchange_weak(seen, i);) {
+      }
+      return;
+    }
+  });
+  return best.load();
 }
 
 }  // namespace disktune::detail

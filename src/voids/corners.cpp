@@ -5,10 +5,10 @@
 #include <optional>
 #include <sstream>
 
-#include "disktune/errors.h"
-
 #include "../domain/point_text.h"
+#include "../geometry/threads.h"
 #include "corner_cover.h"
+#include "disktune/errors.h"
 #include "disktune/voids.h"
 #include "packing_checks.h"
 
@@ -117,28 +117,45 @@ void corners_in_region(const Packing& packing, Vec2 center, double R,
 
 namespace detail {
 
+namespace {
+
+// A disk conflicting with disk `id`, or kNoDisk.
+DiskId conflicting_disk(const Packing& packing, DiskId id) {
+  const double r = packing.radius(id);
+  DiskId other = kNoDisk;
+  packing.any_near(packing.center(id), r, [&](const Neighbor& n) {
+    if (n.id != id && is_conflict(n.d2, std::min(r, n.radius))) other = n.id;
+    return other != kNoDisk;
+  });
+  return other;
+}
+
+}  // namespace
+
+// Disk by disk on every core, the first in id order reported (the check reads only).
 std::optional<std::array<DiskId, 2>> first_conflict(const Packing& packing) {
-  for (const DiskId id : packing.ids()) {
-    const double r = packing.radius(id);
-    DiskId other = kNoDisk;
-    packing.any_near(packing.center(id), r, [&](const Neighbor& n) {
-      if (n.id != id && is_conflict(n.d2, std::min(r, n.radius))) other = n.id;
-      return other != kNoDisk;
-    });
-    if (other != kNoDisk) return std::array<DiskId, 2>{id, other};
-  }
-  return std::nullopt;
+  const std::vector<DiskId> ids = packing.ids();
+  const std::size_t i = first_index(ids.size(), thread_count(0), [&](std::size_t k) {
+    return conflicting_disk(packing, ids[k]) != kNoDisk;
+  });
+  if (i == ids.size()) return std::nullopt;
+  return std::array<DiskId, 2>{ids[i], conflicting_disk(packing, ids[i])};
 }
 
 std::optional<std::string> first_hole(const Packing& packing) {
   if (packing.empty()) return "the whole domain";
   if (const auto hole = uncovered_boundary_point(packing)) return "the boundary point " + point_text(*hole);
+  const std::vector<DiskId> ids = packing.ids();
+  const std::size_t i = first_index(ids.size(), thread_count(0), [&](std::size_t k) {
+    thread_local std::vector<Corner> corners;
+    corners.clear();
+    corners_on_circle(packing, ids[k], corners);
+    return !corners.empty();
+  });
+  if (i == ids.size()) return std::nullopt;
   std::vector<Corner> corners;
-  for (const DiskId id : packing.ids()) {
-    corners_on_circle(packing, id, corners);
-    if (!corners.empty()) return "the point " + point_text(packing.frame().wrap(corners.front().point));
-  }
-  return std::nullopt;
+  corners_on_circle(packing, ids[i], corners);
+  return "the point " + point_text(packing.frame().wrap(corners.front().point));
 }
 
 }  // namespace detail

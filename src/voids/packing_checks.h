@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // What each space gives the one exact check of a packing (internal; packing_defect.cpp
 // writes the check once): the first pair in conflict, and the first uncovered place.
+// Both search on every core (the packing is only read) and answer what a search in
+// order would: the first disk, or triangle, with a defect.
 #pragma once
 
 #include <array>

@@ -12,12 +12,13 @@
 #include <optional>
 
 #include "../domain/point_text.h"
+#include "../geometry/threads.h"
+#include "../geometry/triangle_arrangement.h"
+#include "../geometry/triangle_regions.h"
 #include "corner_cover.h"
 #include "disktune/errors.h"
 #include "disktune/tolerance.h"
 #include "packing_checks.h"
-#include "../geometry/triangle_arrangement.h"
-#include "../geometry/triangle_regions.h"
 
 namespace disktune {
 namespace {
@@ -217,14 +218,20 @@ bool void_points_near_within(const SurfacePacking& packing, Vec3 q, double R, co
 
 namespace {
 
-// A void point of the whole surface, or none: the packing is maximal.
+// A void point of the whole surface, or none: the packing is maximal. Triangle by
+// triangle on every core, the first triangle with one reported (the check reads only).
 std::optional<SurfaceVoidPoint> first_void_point(const SurfacePacking& packing) {
+  const std::size_t triangles = packing.domain().triangles().size();
+  const std::size_t t = detail::first_index(triangles, detail::thread_count(0), [&](std::size_t k) {
+    thread_local std::vector<SurfaceVoidPoint> found;
+    found.clear();
+    void_points_in_triangle(packing, k, {}, found);
+    return !found.empty();
+  });
+  if (t == triangles) return std::nullopt;
   std::vector<SurfaceVoidPoint> found;
-  for (std::size_t t = 0; t < packing.domain().triangles().size(); ++t) {
-    void_points_in_triangle(packing, t, {}, found);
-    if (!found.empty()) return found.front();
-  }
-  return std::nullopt;
+  void_points_in_triangle(packing, t, {}, found);
+  return found.front();
 }
 
 }  // namespace
@@ -289,10 +296,14 @@ DiskId conflicting_disk(const SurfacePacking& packing, DiskId i) {
 
 namespace detail {
 
+// Disk by disk on every core, the first in id order reported.
 std::optional<std::array<DiskId, 2>> first_conflict(const SurfacePacking& packing) {
-  for (const DiskId i : packing.ids())
-    if (const DiskId j = conflicting_disk(packing, i); j != kNoDisk) return std::array<DiskId, 2>{i, j};
-  return std::nullopt;
+  const std::vector<DiskId> ids = packing.ids();
+  const std::size_t i = first_index(ids.size(), thread_count(0), [&](std::size_t k) {
+    return conflicting_disk(packing, ids[k]) != kNoDisk;
+  });
+  if (i == ids.size()) return std::nullopt;
+  return std::array<DiskId, 2>{ids[i], conflicting_disk(packing, ids[i])};
 }
 
 std::optional<std::string> first_hole(const SurfacePacking& packing) {
