@@ -407,6 +407,8 @@ head -n 1 e.csv | grep -qx "x,y,z,r" && pass=$((pass + 1)) || { echo "FAIL surfa
 expect surface-tune 0 "^tune: [0-9]+ -> 420 disks \(target 420, reached\)" -- "$bin" tune --domain "$eight" --radius 0.045 --input e.csv --target-count 420 --output e4.csv
 [ "$(($(wc -l <e4.csv) - 1))" -eq 420 ] && pass=$((pass + 1)) || { echo "FAIL surface tune row count"; fails=$((fails + 1)); }
 expect surface-tune-relax 0 "^tune: [0-9]+ -> 420 disks \(target 420, reached\), .*, relaxed 3 sweeps \(" -- "$bin" tune --domain "$eight" --radius 0.045 --input e.csv --target-count 420 --relax 3 --output e4r.csv
+expect surface-tune-relax-one-thread 0 "relaxed 3 sweeps" -- "$bin" tune --domain "$eight" --radius 0.045 --input e.csv --target-count 420 --relax 3 --output e4r1.csv --threads 1
+cmp -s e4r.csv e4r1.csv && pass=$((pass + 1)) || { echo "FAIL tune --relax --threads 1 changed the packing"; fails=$((fails + 1)); }
 expect surface-tune-relax-report 0 "^report: 420 disks, .*maximal, conflict-free; mesh: .*manifold yes, genus 2" -- "$bin" report e4r.csv --domain "$eight" --radius 0.045
 expect surface-mesh 0 "^mesh: 420 disks, 420 vertices, [0-9]+ triangles \(restricted Delaunay\), manifold yes, genus 2 \(input genus 2\)" -- "$bin" mesh e4.csv --domain "$eight" --radius 0.045 --output e4.off
 sed -n 2p e4.off | grep -qE "^420 [0-9]+ 0$" && pass=$((pass + 1)) || { echo "FAIL surface mesh OFF header"; fails=$((fails + 1)); }
@@ -485,6 +487,12 @@ expect remesh-png 0 "^remesh: 800 vertices \(as asked\)" -- "$bin" remesh "$data
 expect remesh-png-missing-folder 3 "picture folder 'nopics' does not exist" -- "$bin" remesh "$data/surfaces/eight.off" -n 800 -o never.off --png-dir nopics
 absent remesh-png-missing-folder-output never.off
 [ "$(sed -n 2p re.off | cut -d' ' -f1)" = 1500 ] && pass=$((pass + 1)) || { echo "FAIL remesh OFF vertex count"; fails=$((fails + 1)); }
+# --threads: relaxation and the meshes on that many threads, the same mesh for any number
+expect remesh-one-thread 0 "^remesh: 1500 vertices \(as asked\)" -- "$bin" remesh "$data/surfaces/eight.off" -n 1500 -o re1.off --features none --relax 5 --seed 7 --threads 1
+expect remesh-three-threads 0 "^remesh: 1500 vertices \(as asked\)" -- "$bin" remesh "$data/surfaces/eight.off" -n 1500 -o re3.off --features none --relax 5 --seed 7 --threads 3
+cmp -s re1.off re.off && cmp -s re3.off re.off && pass=$((pass + 1)) || { echo "FAIL remesh --threads changed the mesh"; fails=$((fails + 1)); }
+expect remesh-zero-threads 2 "--threads 0 is out of range" -- "$bin" remesh "$data/surfaces/eight.off" -n 1500 -o never.off --threads 0
+absent remesh-zero-threads-output never.off
 # At 700 vertices fandisk's radius is too coarse for the gap under its ledge: seed 3's
 # one-radius mesh has edges in three triangles, so remesh meshes again with smaller radii
 # there and says so.

@@ -414,10 +414,12 @@ PyPacking tune_copy(const PyPacking& packing, std::optional<std::size_t> count,
 }
 
 PyMesh remesh_surface(const python::SurfaceHandle& surface, std::size_t vertices,
-                      std::uint64_t seed, int relax_sweeps, const py::object& progress) {
+                      std::uint64_t seed, int relax_sweeps, unsigned threads,
+                      const py::object& progress) {
   RemeshOptions options;
   options.seed = seed;
   options.relax_sweeps = relax_sweeps;
+  options.threads = threads;
   options.feature_angle = 0;  // the Surface carries its features
   RemeshResult r = without_gil(progress, options.tune,
                                [&] { return remesh(surface.domain, vertices, options); });
@@ -650,9 +652,11 @@ PYBIND11_MODULE(disktune, m) {
         "The quality figures `disktune report --json` writes, as a dict; the spectrum on `threads` threads "
         "(0: one per core).");
   m.def("remesh", &remesh_surface, py::arg("surface"), py::kw_only(), py::arg("vertices"),
-        py::arg("seed") = 1, py::arg("relax_sweeps") = 30, py::arg("progress") = py::none(),
+        py::arg("seed") = 1, py::arg("relax_sweeps") = 30, py::arg("threads") = 0,
+        py::arg("progress") = py::none(),
         "A mesh of the surface with exactly `vertices` vertices on it, from a tuned and relaxed "
-        "packing.");
+        "packing; relaxation and the meshes on `threads` threads (0: one per core), the mesh the "
+        "same for any number.");
   m.def(
       "rve", &make_rve_py, py::kw_only(), py::arg("diameter"), py::arg("gap") = 0.0,
       py::arg("vf") = py::none(), py::arg("fibers") = py::none(), py::arg("width") = 1.0,

@@ -164,6 +164,8 @@ def test_remesh_gives_the_count_on_a_surface_of_genus_two():
     assert len(m.points) - len(uses) + len(m.triangles) == 2 - 2 * 2
     assert m.report["mesh_check"]["manifold"] and m.report["mesh_check"]["genus"] == 2
     assert m.report["reached"] and m.report["mesh"]["angles"]["min"] > 0
+    alone = disktune.remesh(surface, vertices=1500, seed=1, relax_sweeps=5, threads=1)
+    assert np.array_equal(alone.points, m.points) and np.array_equal(alone.triangles, m.triangles)
 
 
 def test_report_is_a_dict_of_the_json_report():
