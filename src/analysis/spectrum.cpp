@@ -11,7 +11,9 @@
 
 #include "disktune/errors.h"
 
-#if defined(__GNUC__) && defined(__x86_64__) && defined(__linux__)
+// Not under ThreadSanitizer: the clones' resolver runs while the program is being loaded,
+// before the sanitizer's runtime, and its instrumented code crashes there.
+#if defined(__GNUC__) && defined(__x86_64__) && defined(__linux__) && !defined(__SANITIZE_THREAD__)
 #define DISKTUNE_SIMD_CLONES __attribute__((target_clones("arch=x86-64-v3", "default")))
 #else
 #define DISKTUNE_SIMD_CLONES
