@@ -2,13 +2,12 @@
 #include "disktune/spectrum.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <limits>
 #include <sstream>
 #include <string>
-#include <thread>
 
+#include "../geometry/threads.h"
 #include "disktune/errors.h"
 
 // Not under ThreadSanitizer: the clones' resolver runs while the program is being loaded,
@@ -82,33 +81,28 @@ void transform_row(const Points& p, int K, int ky, std::vector<double>& fr,
   }
 }
 
-/// Fills s.power: rows ky = 0 .. K-1 are computed (shared among threads through an
-/// atomic row counter; each row is computed the same way whoever takes it), and rows
-/// ky < 0 mirror them, as P(-k) = P(k) for real points.
+/// Fills s.power: rows ky = 0 .. K-1 are computed (shared among threads, parallel_for;
+/// each row is computed the same way whoever takes it), and rows ky < 0 mirror them, as
+/// P(-k) = P(k) for real points.
 void periodogram(const Points& points, Spectrum& s, unsigned cores) {
   const int K = s.window, side = s.side();
   const double n = static_cast<double>(points.u.size());
   s.power.assign(static_cast<std::size_t>(side) * side, 0.0);
-  std::atomic<int> next{0};
-  auto work = [&] {
-    std::vector<double> fr(side), fi(side);
-    for (int ky = next++; ky < K; ky = next++) {
-      std::fill(fr.begin(), fr.end(), 0.0);
-      std::fill(fi.begin(), fi.end(), 0.0);
-      transform_row(points, K, ky, fr, fi);
-      for (int i = 0; i < side; ++i) {
-        const double p = (fr[i] * fr[i] + fi[i] * fi[i]) / n;
-        s.power[static_cast<std::size_t>(ky + K - 1) * side + i] = p;
-        s.power[static_cast<std::size_t>(K - 1 - ky) * side + (side - 1 - i)] = p;
-      }
+  const unsigned threads = std::min(detail::thread_count(cores), 4096u);
+  std::vector<std::vector<double>> re(threads, std::vector<double>(side)), im = re;
+  detail::parallel_for(static_cast<std::size_t>(K), threads, [&](std::size_t row, unsigned thread) {
+    const int ky = static_cast<int>(row);
+    std::vector<double>& fr = re[thread];
+    std::vector<double>& fi = im[thread];
+    std::fill(fr.begin(), fr.end(), 0.0);
+    std::fill(fi.begin(), fi.end(), 0.0);
+    transform_row(points, K, ky, fr, fi);
+    for (int i = 0; i < side; ++i) {
+      const double p = (fr[i] * fr[i] + fi[i] * fi[i]) / n;
+      s.power[static_cast<std::size_t>(ky + K - 1) * side + i] = p;
+      s.power[static_cast<std::size_t>(K - 1 - ky) * side + (side - 1 - i)] = p;
     }
-  };
-  const unsigned wanted = cores > 0 ? cores : std::thread::hardware_concurrency();
-  const int threads = std::clamp(static_cast<int>(std::min<unsigned>(wanted, 4096)), 1, K);
-  std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t) pool.emplace_back(work);
-  work();
-  for (std::thread& t : pool) t.join();
+  });
   s.power[static_cast<std::size_t>(K - 1) * side + (K - 1)] = 0;  // DC removed
 }
 

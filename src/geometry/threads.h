@@ -48,8 +48,8 @@ void parallel_for(std::size_t count, unsigned threads, Work&& work) {
   for (unsigned t = 1; t < n; ++t) {
     try {
       pool.emplace_back(run, t);
-    } catch (const std::system_error&) {
-      break;  // fewer threads: the same result, later
+    } catch (...) {  // no thread to be had (std::system_error, std::bad_alloc)
+      break;         // fewer threads: the same result, later
     }
   }
   run(0);

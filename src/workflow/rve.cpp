@@ -2,18 +2,17 @@
 #include "disktune/rve.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <exception>
 #include <string>
-#include <thread>
 
+#include "../geometry/threads.h"
+#include "../io/number_text.h"
 #include "disktune/density.h"
 #include "disktune/errors.h"
 #include "disktune/resources.h"
 #include "disktune/sampling.h"
-#include "../io/number_text.h"
 #include "rve_polydisperse.h"
 
 namespace disktune {
@@ -245,29 +244,29 @@ Rve make_rve(const RveSpec& spec) {
 
 std::vector<Rve> make_rves(const RveSpec& spec, std::size_t count, unsigned threads) {
   const std::size_t fibers = rve_fiber_count(spec);
-  if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
-  const std::size_t parallel = std::min<std::size_t>(threads, count);
+  threads = detail::thread_count(threads);
   if (count == 0) return {};
-  check_memory(spec, fibers, parallel);
+  check_memory(spec, fibers, std::min<std::size_t>(threads, count));
   std::vector<Rve> out(count);
+  // A failure stops the handing out (the others finish their current one); of those that
+  // failed, the first by index is reported, not the first in time.
   std::vector<std::exception_ptr> failed(count);
-  std::atomic<std::size_t> next{0};
-  const auto work = [&] {
-    for (std::size_t k; (k = next++) < count;) {
+  try {
+    detail::parallel_for(count, threads, [&](std::size_t k, unsigned) {
       try {
         RveSpec one = spec;
         one.seed = spec.seed + k;
         out[k] = make_checked(one, fibers);
       } catch (...) {
         failed[k] = std::current_exception();
-        next = count;  // the others stop after their current one
+        throw;
       }
-    }
-  };
-  std::vector<std::thread> pool;
-  for (std::size_t t = 1; t < parallel; ++t) pool.emplace_back(work);
-  work();
-  for (std::thread& t : pool) t.join();
+    });
+  } catch (...) {
+    if (std::none_of(failed.begin(), failed.end(),
+                     [](const std::exception_ptr& e) { return e != nullptr; }))
+      throw;  // not a realization's own failure
+  }
   for (const std::exception_ptr& e : failed)
     if (e) std::rethrow_exception(e);
   return out;
