@@ -14,8 +14,8 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Surface_mesh.h>
-#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 
+#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -24,9 +24,12 @@
 #include <set>
 #include <sstream>
 #include <stdexcept>
+#include <string>
+#include <thread>
 #include <tuple>
 #include <vector>
 
+#include "../src/geometry/threads.h"
 #include "disktune/cgal/mesh_output.h"
 #include "disktune/cgal/planar_domain_from_cdt.h"
 #include "disktune/cgal/remesh.h"
@@ -69,6 +72,29 @@ TEST(Umbrella, IncludesEveryPublicHeader) {
     EXPECT_NE(text.str().find("#include \"disktune/" + name + "\""), std::string::npos) << name;
   }
   EXPECT_GT(headers, 30u);
+}
+
+// The library's default thread count: one per core until set; a count given to a call
+// wins; and what a call does on it does not depend on it.
+TEST(Threads, TheDefaultIsOnePerCoreUntilSetAndChangesNoResult) {
+  EXPECT_EQ(default_threads(), 0u);
+  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+  EXPECT_EQ(detail::thread_count(0), cores);
+  EXPECT_EQ(detail::thread_count(5), 5u);
+  Rng rng(2);
+  Packing p = sample_mps(PeriodicBox(1, 1), 0.01, rng);
+  p.remove(p.ids()[4000]);
+  const std::string on_every_core = packing_defect(p);
+  set_default_threads(3);
+  EXPECT_EQ(default_threads(), 3u);
+  EXPECT_EQ(detail::thread_count(0), 3u);
+  EXPECT_EQ(detail::thread_count(5), 5u);
+  EXPECT_EQ(packing_defect(p), on_every_core);
+  set_default_threads(1);
+  EXPECT_EQ(packing_defect(p), on_every_core);
+  set_default_threads(0);
+  EXPECT_EQ(detail::thread_count(0), cores);
+  EXPECT_NE(on_every_core.find("not maximal"), std::string::npos) << on_every_core;
 }
 
 TEST(RadiusForCount, AMaximalSampleAtThatRadiusHasAboutTheCount) {

@@ -411,6 +411,12 @@ expect surface-tune-relax-one-thread 0 "relaxed 3 sweeps" -- "$bin" tune --domai
 cmp -s e4r.csv e4r1.csv && pass=$((pass + 1)) || { echo "FAIL tune --relax --threads 1 changed the packing"; fails=$((fails + 1)); }
 expect surface-tune-relax-report 0 "^report: 420 disks, .*maximal, conflict-free; mesh: .*manifold yes, genus 2" -- "$bin" report e4r.csv --domain "$eight" --radius 0.045
 expect surface-mesh 0 "^mesh: 420 disks, 420 vertices, [0-9]+ triangles \(restricted Delaunay\), manifold yes, genus 2 \(input genus 2\)" -- "$bin" mesh e4.csv --domain "$eight" --radius 0.045 --output e4.off
+expect surface-mesh-one-thread 0 "^mesh: 420 disks, 420 vertices" -- "$bin" mesh e4.csv --domain "$eight" --radius 0.045 --output e4-1.off --threads 1
+cmp -s e4.off e4-1.off && pass=$((pass + 1)) || { echo "FAIL mesh --threads 1 changed the mesh"; fails=$((fails + 1)); }
+expect surface-sample-one-thread 0 "^sample: [0-9]+ disks" -- "$bin" sample --domain "$eight" --radius 0.045 --seed 3 --output e-1.csv --threads 1
+cmp -s e.csv e-1.csv && pass=$((pass + 1)) || { echo "FAIL sample --threads 1 changed the sample"; fails=$((fails + 1)); }
+expect sample-zero-threads 2 "--threads 0 is out of range" -- "$bin" sample --radius 0.05 --threads 0 --output never.csv
+absent sample-zero-threads-output never.csv
 sed -n 2p e4.off | grep -qE "^420 [0-9]+ 0$" && pass=$((pass + 1)) || { echo "FAIL surface mesh OFF header"; fails=$((fails + 1)); }
 expect surface-report 0 "^report: 420 disks, eta = 0\.6[0-9]+, rho = [0-9.]+, maximal, conflict-free; mesh: .*manifold yes, genus 2" -- "$bin" report e4.csv --domain "$eight" --radius 0.045 --json e4.json
 grep -q '"maximal": true' e4.json && grep -q '"hausdorff"' e4.json && grep -q '"local_beta"' e4.json && pass=$((pass + 1)) || { echo "FAIL surface report JSON"; fails=$((fails + 1)); }

@@ -55,6 +55,9 @@ double memory_size(const std::string& text);
 CLI::Validator whole_number(std::uint64_t low, std::uint64_t high, const std::string& what);
 /// The --seed option of sample, tune and sweep: 0 to 2^64 - 1, nothing else.
 CLI::Option* add_seed_option(CLI::App* cmd, std::uint64_t& seed);
+/// --threads N (1 to 4096) into `threads`, "WHAT (default: one per core); ..." as help;
+/// it also sets the library's default thread count (threads.h).
+CLI::Option* add_threads_option(CLI::App* cmd, unsigned& threads, const std::string& what);
 /// Makes `option` an output file that may be given as "-": standard output (written
 /// straight, as any device; the summary lines go to standard error anyway).
 CLI::Option* writes_file(CLI::Option* option);
@@ -94,6 +97,7 @@ struct SampleJob {
   DomainArgs domain;
   std::uint64_t seed = 1;
   std::string output, svg;
+  unsigned threads = 0;  // for the final check (set_default_threads); 0: one per core
 };
 int run_sample(const SampleJob& job);
 

@@ -20,6 +20,7 @@ struct MeshArgs {
   std::string input;
   DomainArgs domain;
   std::string output, format;
+  unsigned threads = 0;  // set_default_threads does the work (options.cpp)
 };
 
 int run_mesh(const MeshArgs& given) {
@@ -77,6 +78,7 @@ void add_mesh_command(CLI::App& app, Action& action) {
           ".ele pair (planar and periodic meshes)"))
       ->required();
   add_format_option(cmd, args->format);
+  add_threads_option(cmd, args->threads, "Threads for the restricted Delaunay mesh of a surface");
   cmd->callback([args, &action] { action = [args] { return run_mesh(*args); }; });
 }
 

@@ -2,20 +2,20 @@
 // Options shared by several commands, validated as they are parsed: CLI11 turns "-1"
 // or 2^64 into an unsigned number silently (wrapping), so whole numbers are checked as
 // text first.
-#include <CLI/CLI.hpp>
-
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <CLI/CLI.hpp>
 #include <cctype>
 #include <cerrno>
-#include <cstdarg>
-#include <cstdio>
 #include <cmath>
+#include <cstdarg>
 #include <cstdint>
+#include <cstdio>
 #include <string>
 
 #include "commands.h"
+#include "disktune/threads.h"
 
 namespace disktune::cli {
 
@@ -39,6 +39,18 @@ CLI::Option* add_seed_option(CLI::App* cmd, std::uint64_t& seed) {
   return cmd->add_option("--seed", seed, "Random seed (0 to 2^64-1); the same seed gives the same output")
       ->check(whole_number(0, UINT64_MAX, "--seed"))
       ->capture_default_str();
+}
+
+CLI::Option* add_threads_option(CLI::App* cmd, unsigned& threads, const std::string& what) {
+  // Also the library's default (set_default_threads), for the work a command does without
+  // naming a count: the final checks, the restricted Delaunay meshes.
+  return cmd
+      ->add_option("--threads", threads,
+                   what + " (default: one per core); the output is the same for any number")
+      ->check(whole_number(1, 4096, "--threads"))
+      ->each([](const std::string& text) {
+        set_default_threads(static_cast<unsigned>(std::stoul(text)));
+      });
 }
 
 namespace {

@@ -34,10 +34,7 @@ void add_remesh_command(CLI::App& app, Action& action) {
                   "closer to equilateral, and cost time")
       ->check(whole_number(0, 10000, "--relax"))
       ->capture_default_str();
-  cmd->add_option(
-         "--threads", job->threads,
-         "Threads for relaxation (default: one per core); the mesh is the same for any number")
-      ->check(whole_number(1, 4096, "--threads"));
+  add_threads_option(cmd, job->threads, "Threads for relaxation and the meshes");
   writes_file(cmd->add_option("--json", job->json, "Write the report (topology, angles, edges, Hausdorff distance) as JSON"));
   cmd->add_option(
       "--png-dir", job->png_dir,

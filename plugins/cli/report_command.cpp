@@ -147,8 +147,7 @@ void add_report_command(CLI::App& app, Action& action) {
                   "Spectrum frequencies |kx|, |ky| < K (default: reach normalised frequency 3, "
                   "capped at N K (2K-1) <= 1e10); at most 4096")
       ->check(whole_number(0, kMaxSpectrumWindow, "--spectrum-window"));
-  cmd->add_option("--threads", args->threads, "Threads for the spectrum (default: one per core)")
-      ->check(whole_number(1, 4096, "--threads"));
+  add_threads_option(cmd, args->threads, "Threads for the spectrum and the checks");
   cmd->callback([args, &action] { action = [args] { return run_report(*args); }; });
 }
 

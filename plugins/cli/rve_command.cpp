@@ -244,8 +244,7 @@ void add_rve_command(CLI::App& app, Action& action) {
                   "spread over the ensemble")
       ->check(whole_number(1, 10000, "--realizations"))
       ->capture_default_str();
-  cmd->add_option("--threads", job->threads, "Threads for the realizations (default: one per core)")
-      ->check(whole_number(1, 4096, "--threads"));
+  add_threads_option(cmd, job->threads, "Threads for the realizations");
   add_seed_option(cmd, job->spec.seed);
   add_memory_option(cmd, job->spec.max_memory);
   cmd->callback([job, &action, segments, element_size, diameter, listed] {

@@ -153,10 +153,7 @@ void add_tune_command(CLI::App& app, Action& action) {
                   "unchanged; the triangles of the mesh come closer to equilateral, the packing more "
                   "regular (remesh uses 30)")
       ->check(whole_number(0, 10000, "--relax"));
-  cmd->add_option("--threads", args->threads,
-                  "Threads for --relax on a surface (default: one per core); the result is the "
-                  "same for any number")
-      ->check(whole_number(1, 4096, "--threads"));
+  add_threads_option(cmd, args->threads, "Threads for --relax on a surface and the final check");
   writes_file(cmd->add_option("--output,-o", args->output, "CSV file to write (header x,y,r; x,y,z,r on a surface)"));
   writes_file(cmd->add_option("--svg", args->svg, "Also draw the packing (frozen crystal disks in blue)"));
   cmd->callback([args, cmd, &action] {

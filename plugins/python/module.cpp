@@ -648,6 +648,11 @@ PYBIND11_MODULE(disktune, m) {
   m.def("mesh", &mesh_of, py::arg("packing"),
         "The packing's Delaunay mesh: periodic in the box, constrained in a planar domain, "
         "restricted on a surface.");
+  m.def("set_default_threads", &set_default_threads, py::arg("threads"),
+        "At most this many threads per call where a call is given no count (the final checks, the "
+        "restricted Delaunay meshes; 0: one per core, the default); results do not depend on it.");
+  m.def("default_threads", &default_threads,
+        "The default set by set_default_threads (0: one per core).");
   m.def("report", &report_of, py::arg("packing"), py::kw_only(), py::arg("spectrum") = true, py::arg("threads") = 0,
         "The quality figures `disktune report --json` writes, as a dict; the spectrum on `threads` threads "
         "(0: one per core).");

@@ -14,10 +14,14 @@
 #include <thread>
 #include <vector>
 
+#include "disktune/threads.h"
+
 namespace disktune::detail {
 
-/// The number of threads asked for, 0 meaning one per core.
+/// The number of threads asked for, 0 meaning the default (set_default_threads), and
+/// where that is 0 too, one per core.
 inline unsigned thread_count(unsigned threads) {
+  if (threads == 0) threads = default_threads();
   return threads > 0 ? threads : std::max(1u, std::thread::hardware_concurrency());
 }
 

@@ -166,6 +166,11 @@ def test_remesh_gives_the_count_on_a_surface_of_genus_two():
     assert m.report["reached"] and m.report["mesh"]["angles"]["min"] > 0
     alone = disktune.remesh(surface, vertices=1500, seed=1, relax_sweeps=5, threads=1)
     assert np.array_equal(alone.points, m.points) and np.array_equal(alone.triangles, m.triangles)
+    disktune.set_default_threads(1)
+    assert disktune.default_threads() == 1
+    default_one = disktune.remesh(surface, vertices=1500, seed=1, relax_sweeps=5)
+    disktune.set_default_threads(0)
+    assert np.array_equal(default_one.points, m.points)
 
 
 def test_report_is_a_dict_of_the_json_report():
