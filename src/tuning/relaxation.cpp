@@ -143,10 +143,10 @@ std::size_t sweep(P& packing, double spacing, Rng& rng, Steps<P>* last, NearTria
 // radius), those it could meet at its new place; it writes its own entries and the grid
 // cells it leaves and enters, within `write` (a step is at most a quarter rest length,
 // and its projection onto the surface at most doubles it). A grid query reads whole cells
-// meeting its box, so cubes wider than read + write + two cells (two disks' cells then
-// differ) keep every write of one cube out of what any other cube of its colour reads or
-// writes. The cells a move can enter are made beforehand, so no move changes the grid's
-// table.
+// meeting its box, so with cubes wider than read + twice write + two cells, a cell one
+// move reads and a cell another (a cube of the same colour away) enters or leaves
+// differ, and so do the cells two such moves write. The cells a move can enter are made
+// beforehand, so no move changes the grid's table.
 std::size_t sweep(SurfacePacking& packing, double spacing, Rng& rng, Steps<SurfacePacking>* last,
                   detail::TrianglesNearDisks& near, unsigned threads) {
   std::vector<DiskId> order = packing.ids();
