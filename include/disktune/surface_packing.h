@@ -226,9 +226,10 @@ class SurfacePacking {
   /// and the disk's own entries, so moves far enough apart can run on separate threads
   /// (relax).
   void add_grid_cells(Vec3 q, double R) { grid_.add_cells(q, R); }
-  /// False where the domain spans so many cells that cells far apart share a grid key
-  /// (SpaceGrid::keys_distinct_within), and moves far apart may still touch one cell.
-  bool grid_cells_distinct() const;
+  /// False where the domain, grown by `reach`, spans so many cells that cells far apart
+  /// share a grid key (SpaceGrid::keys_distinct_within), and moves far apart may still
+  /// touch one cell.
+  bool grid_cells_distinct(double reach) const;
 
  private:
   std::shared_ptr<const SurfaceIndex> index_;

@@ -291,8 +291,9 @@ void SurfacePacking::move(DiskId id, const SurfacePoint& q) {
   grid_.insert(id, q.p);
 }
 
-bool SurfacePacking::grid_cells_distinct() const {
-  const Vec3 margin{grid_.cell(), grid_.cell(), grid_.cell()};
+bool SurfacePacking::grid_cells_distinct(double reach) const {
+  const double grown = reach + grid_.cell();
+  const Vec3 margin{grown, grown, grown};
   return grid_.keys_distinct_within(domain().bbox_min() - margin, domain().bbox_max() + margin);
 }
 

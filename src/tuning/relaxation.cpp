@@ -156,7 +156,7 @@ std::size_t sweep(SurfacePacking& packing, double spacing, Rng& rng, Steps<Surfa
   const double read = std::max({1.5 * spacing, 1 + 0.5 * spacing, 2.001}) * r;
   const double write = 0.5 * spacing * r * 1.001;
   const double cube = 1.01 * (read + write + 2 * packing.grid_cell() + write);
-  if (!packing.grid_cells_distinct()) threads = 1;
+  if (!packing.grid_cells_distinct(cube)) threads = 1;
   // The cubes shifted at random and the colours in a random order, each sweep: a disk's
   // neighbours are not always moved before it, or always after.
   const Vec3 origin{cube * uniform01(rng), cube * uniform01(rng), cube * uniform01(rng)};
