@@ -52,6 +52,9 @@ class SpaceGrid {
   /// Unregisters `id`, known to be at `p` (nothing when it is not there).
   void remove(std::uint32_t id, Vec3 p);
   std::uint64_t key(Vec3 p) const;
+  /// The index along one axis of the cell of width `cell` holding coordinate v (cells
+  /// past 2^52 of them share the outermost; NaN goes there too).
+  static std::int64_t cell_index(double v, double cell);
   /// Makes the cells meeting the box [q - R, q + R] exist (empty where new): inserting or
   /// removing an item there then changes only that cell's list, never the table, so
   /// threads may do so in cells no other thread reads at the time.

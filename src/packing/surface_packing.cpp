@@ -14,14 +14,16 @@ namespace disktune {
 
 // ---- SpaceGrid ----
 
-std::int64_t SpaceGrid::coord(double v) const {
+std::int64_t SpaceGrid::cell_index(double v, double cell) {
   // Points beyond 2^52 cells share the outermost cells (see pack: only slower): casting
   // a larger value to int64 is undefined, which a surface CSV point at x = 1e300 reached
   // (found by fuzzing, #17). Still monotone, so a box's cells hold all its items.
   constexpr double kFar = 4503599627370496.0;  // 2^52
-  const double c = std::floor(v / cell_);
+  const double c = std::floor(v / cell);
   return static_cast<std::int64_t>(c >= -kFar ? std::min(c, kFar) : -kFar);  // NaN: -kFar
 }
+
+std::int64_t SpaceGrid::coord(double v) const { return cell_index(v, cell_); }
 
 std::uint64_t SpaceGrid::pack(std::int64_t i, std::int64_t j, std::int64_t k) {
   // 21 bits per axis around the origin: two million cells each way is plenty, and

@@ -7,9 +7,7 @@
 // same for any number of threads.
 #pragma once
 
-#include <algorithm>
 #include <array>
-#include <cmath>
 #include <cstdint>
 #include <map>
 #include <tuple>
@@ -30,12 +28,7 @@ inline ColourBlocks colour_blocks(const SurfacePacking& packing, const std::vect
                                   double block, Vec3 origin) {
   using Cube = std::tuple<std::int64_t, std::int64_t, std::int64_t>;
   std::map<Cube, std::vector<DiskId>> cubes;
-  // Cubes beyond 2^52 of them share the outermost (as SpaceGrid::coord): only slower.
-  const auto index = [&](double v) {
-    constexpr double kFar = 4503599627370496.0;
-    const double c = std::floor(v / block);
-    return static_cast<std::int64_t>(c >= -kFar ? std::min(c, kFar) : -kFar);
-  };
+  const auto index = [&](double v) { return SpaceGrid::cell_index(v, block); };
   for (const DiskId p : order) {
     const Vec3 c = packing.center(p) - origin;
     cubes[{index(c.x), index(c.y), index(c.z)}].push_back(p);
