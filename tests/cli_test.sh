@@ -275,6 +275,19 @@ for f in spectrum radial_mean anisotropy angles edges orientation; do
   [ -s "pics/$f.png" ] && head -c 8 "pics/$f.png" | grep -q PNG && pass=$((pass + 1)) || { echo "FAIL pics/$f.png"; fails=$((fails + 1)); }
 done
 [ "$(ls pics | wc -l)" -eq 6 ] && pass=$((pass + 1)) || { echo "FAIL pics: other files left"; fails=$((fails + 1)); }
+# --picture-format: the same pictures as PDF (one page each) and SVG, named by the format
+mkdir pdfpics svgpics
+expect report-pdf 0 "^report: " -- "$bin" report q.csv --radius 0.05 --picture-dir pdfpics --picture-format pdf
+for f in spectrum radial_mean anisotropy angles edges orientation; do
+  head -c 5 "pdfpics/$f.pdf" | grep -q '%PDF-' && tail -c 8 "pdfpics/$f.pdf" | grep -q '%%EOF' && pass=$((pass + 1)) || { echo "FAIL pdfpics/$f.pdf"; fails=$((fails + 1)); }
+done
+[ "$(ls pdfpics | wc -l)" -eq 6 ] && pass=$((pass + 1)) || { echo "FAIL pdfpics: other files"; ls pdfpics; fails=$((fails + 1)); }
+expect report-svg 0 "^report: " -- "$bin" report q.csv --radius 0.05 --png-dir svgpics --picture-format SVG
+for f in spectrum radial_mean anisotropy angles edges orientation; do
+  /usr/bin/python3 -c "import sys, xml.dom.minidom as m; d = m.parse(sys.argv[1]); assert d.documentElement.tagName == 'svg'" "svgpics/$f.svg" &&
+    pass=$((pass + 1)) || { echo "FAIL svgpics/$f.svg is no SVG document"; fails=$((fails + 1)); }
+done
+expect report-bad-picture-format 2 "--picture-format must be png, pdf or svg, not 'jpeg'" -- "$bin" report q.csv --radius 0.05 --picture-dir pics --picture-format jpeg
 expect report-png-missing-folder 3 "picture folder 'nopics' does not exist" -- "$bin" report q.csv --radius 0.05 --json never.json --png-dir nopics
 absent report-png-missing-folder-json never.json
 absent report-png-missing-folder-dir nopics
@@ -490,6 +503,9 @@ expect remesh-off 0 "^remesh: 1500 vertices \(as asked\), .*genus 2 \(input genu
 mkdir remesh-pics
 expect remesh-png 0 "^remesh: 800 vertices \(as asked\)" -- "$bin" remesh "$data/surfaces/eight.off" -n 800 -o re-png.off --relax 2 --png-dir remesh-pics
 [ "$(ls remesh-pics | tr '\n' ' ')" = "angles.png edges.png surface.png " ] && pass=$((pass + 1)) || { echo "FAIL remesh pictures"; ls remesh-pics; fails=$((fails + 1)); }
+mkdir remesh-pdf
+expect remesh-pdf 0 "^remesh: 800 vertices \(as asked\)" -- "$bin" remesh "$data/surfaces/eight.off" -n 800 -o re-pdf.off --relax 2 --picture-dir remesh-pdf --picture-format pdf
+[ "$(ls remesh-pdf | tr '\n' ' ')" = "angles.pdf edges.pdf surface.pdf " ] && pass=$((pass + 1)) || { echo "FAIL remesh PDF pictures"; ls remesh-pdf; fails=$((fails + 1)); }
 expect remesh-png-missing-folder 3 "picture folder 'nopics' does not exist" -- "$bin" remesh "$data/surfaces/eight.off" -n 800 -o never.off --png-dir nopics
 absent remesh-png-missing-folder-output never.off
 [ "$(sed -n 2p re.off | cut -d' ' -f1)" = 1500 ] && pass=$((pass + 1)) || { echo "FAIL remesh OFF vertex count"; fails=$((fails + 1)); }
@@ -614,6 +630,10 @@ mkdir -p rvepics
 expect rve-png 0 "^rve: 300 fibers \(as asked: 300\)" -- "$bin" rve -d 0.05 -g 0.0025 -n 300 --seed 5 -o pics.csv --png-dir rvepics
 [ "$(ls rvepics | tr '\n' ' ')" = "cell.png nearest.png pair_correlation.png psi6_local.png ripley_l.png " ] &&
   pass=$((pass + 1)) || { echo "FAIL rve pictures"; fails=$((fails + 1)); }
+mkdir -p rvesvg
+expect rve-svg 0 "^rve: 300 fibers \(as asked: 300\)" -- "$bin" rve -d 0.05 -g 0.0025 -n 300 --seed 5 -o pics-svg.csv --picture-dir rvesvg --picture-format svg
+[ "$(ls rvesvg | tr '\n' ' ')" = "cell.svg nearest.svg pair_correlation.svg psi6_local.svg ripley_l.svg " ] &&
+  pass=$((pass + 1)) || { echo "FAIL rve SVG pictures"; ls rvesvg; fails=$((fails + 1)); }
 expect rve-png-missing-folder 3 "picture folder 'nopics' does not exist" -- "$bin" rve -d 0.05 -n 300 -o never.csv --png-dir nopics
 absent rve-png-missing-folder-csv never.csv
 # rve meshes: Gmsh MSH 4.1 read by meshio (an independent reader), Abaqus input; refusals

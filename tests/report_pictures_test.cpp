@@ -3,16 +3,22 @@
 // with words (title and axis titles) where they belong; the spectrum's gray levels are
 // the powers, block by block; a missing folder is refused before anything is written.
 // The fiber cell's picture: its blue pixels are where the fibers are, counted against
-// the fraction.
+// the fraction. PDF and SVG: read here as text (the PDF's streams inflated with zlib),
+// pages the PNG's size, text drawn as text from an embedded font, the spectrum one image.
 #include "disktune/report_pictures.h"
 
 #include <gtest/gtest.h>
 #include <png.h>
+#include <zlib.h>
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <regex>
 #include <set>
+#include <sstream>
 #include <vector>
 
 #include "../src/io/spectrum_layout.h"
@@ -205,6 +211,89 @@ TEST(ReportPictures, TheSurfaceIsColoredByEachTrianglesSmallestAngle) {
                         measure_surface_mesh(sliver, std::vector<double>(3, 1.0)), sliver);
   EXPECT_GT(count(decode(thin.path / "surface.png"), true), 10000u);
   EXPECT_EQ(count(decode(thin.path / "surface.png"), false), 0u);
+}
+
+std::string slurp(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// Every stream of a PDF, inflated where it is Flate-compressed (as cairo writes them).
+std::string pdf_streams(const std::string& pdf) {
+  std::string out;
+  for (std::size_t at = pdf.find("stream\n"); at != std::string::npos;
+       at = pdf.find("stream\n", at + 1)) {
+    if (at >= 3 && pdf.compare(at - 3, 3, "end") == 0) continue;
+    const std::size_t begin = at + 7, end = pdf.find("endstream", begin);
+    if (end == std::string::npos) break;
+    z_stream z{};
+    if (inflateInit(&z) != Z_OK) continue;
+    z.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(pdf.data() + begin));
+    z.avail_in = static_cast<uInt>(end - begin);
+    char buffer[1 << 14];
+    int status = Z_OK;
+    while (status == Z_OK) {
+      z.next_out = reinterpret_cast<Bytef*>(buffer);
+      z.avail_out = sizeof buffer;
+      status = inflate(&z, Z_NO_FLUSH);
+      out.append(buffer, sizeof buffer - z.avail_out);
+    }
+    inflateEnd(&z);
+    out += '\n';
+  }
+  return out;
+}
+
+std::size_t occurrences(const std::string& text, const std::regex& what) {
+  return static_cast<std::size_t>(
+      std::distance(std::sregex_iterator(text.begin(), text.end(), what), std::sregex_iterator()));
+}
+
+TEST(ReportPictures, PdfAndSvgPicturesAreVectorsWithRealTextOnThePngsPage) {
+  const PeriodicBox box(1, 1);
+  Rng rng(4);
+  const Packing p = sample_mps(box, 0.03, rng);
+  const QualityReport q = measure_quality(p, periodic_delaunay(p), 0.03);
+  const Spectrum s = measure_spectrum(p);
+  TempDir dir;  // one folder per format in it
+  const fs::path png = dir.path / "png", pdf = dir.path / "pdf", svg = dir.path / "svg";
+  for (const fs::path& folder : {png, pdf, svg}) fs::create_directory(folder);
+  write_report_pictures(png.string(), q, &s, &p);
+  write_report_pictures(pdf.string(), q, &s, &p, PictureFormat::pdf);
+  write_report_pictures(svg.string(), q, &s, &p, PictureFormat::svg);
+  const std::vector<std::string> stems{"orientation", "angles",      "edges",
+                                       "spectrum",    "radial_mean", "anisotropy"};
+  for (const fs::path& folder : {png, pdf, svg}) {
+    std::size_t files = 0;
+    for (const auto& entry : fs::directory_iterator(folder)) files += entry.is_regular_file();
+    EXPECT_EQ(files, stems.size());  // these and nothing else
+  }
+  for (const std::string& stem : stems) {
+    const Decoded page = decode(png / (stem + ".png"));
+    const std::string size = std::to_string(page.width) + " " + std::to_string(page.height);
+    const std::string a = slurp(pdf / (stem + ".pdf"));
+    ASSERT_FALSE(a.empty()) << stem;
+    EXPECT_EQ(a.rfind("%PDF-", 0), 0u) << stem;
+    EXPECT_NE(a.find("%%EOF", a.size() - 8), std::string::npos) << stem << ": not finished";
+    EXPECT_EQ(occurrences(a, std::regex("/Type /Page\\b(?!s)")), 1u) << stem;
+    EXPECT_NE(a.find("/MediaBox [ 0 0 " + size + " ]"), std::string::npos) << stem;
+    const std::string b = slurp(svg / (stem + ".svg"));
+    EXPECT_EQ(b.rfind("<?xml", 0), 0u) << stem;
+    EXPECT_NE(b.find("viewBox=\"0 0 " + size + "\""), std::string::npos) << stem;
+    EXPECT_NE(b.find("</svg>"), std::string::npos) << stem << ": not finished";
+    if (stem == "orientation") continue;  // disks only, no words
+    EXPECT_NE(a.find("/FontFile"), std::string::npos) << stem << ": no embedded font";
+    // Text shown with the text operators (a title and axis titles at least), not paths.
+    EXPECT_GE(occurrences(pdf_streams(a), std::regex("\\bT[Jj]\\b")), 3u) << stem;
+    EXPECT_GE(occurrences(b, std::regex("<use xlink:href=\"#glyph")), 20u) << stem << ": no text";
+  }
+  // The spectrum's gray blocks: one image of its frequencies, not thousands of squares.
+  const std::string side = std::to_string(s.side());
+  const std::string a = slurp(pdf / "spectrum.pdf");
+  EXPECT_NE(a.find("/Width " + side), std::string::npos);
+  EXPECT_NE(a.find("/Height " + side), std::string::npos);
+  EXPECT_NE(slurp(svg / "spectrum.svg").find("<image id=\"image"), std::string::npos);
+  EXPECT_EQ(extension(PictureFormat::pdf), "pdf");
 }
 
 TEST(ReportPictures, RefusesAMissingFolder) {

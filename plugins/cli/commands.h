@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "disktune/mesh_io.h"
+#include "disktune/report_pictures.h"
 #include "disktune/tuning.h"
 
 namespace disktune::cli {
@@ -58,6 +59,13 @@ CLI::Option* add_seed_option(CLI::App* cmd, std::uint64_t& seed);
 /// --threads N (1 to 4096) into `threads`, "WHAT (default: one per core); ..." as help;
 /// it also sets the library's default thread count (threads.h).
 CLI::Option* add_threads_option(CLI::App* cmd, unsigned& threads, const std::string& what);
+/// Where the pictures go (--picture-dir, also --png-dir) and as what (--picture-format).
+struct PictureArgs {
+  std::string dir;  // empty: no pictures
+  PictureFormat format = PictureFormat::png;
+};
+/// --picture-dir (`pictures`: what it writes, named .png) and --picture-format.
+void add_picture_options(CLI::App* cmd, PictureArgs& args, const std::string& pictures);
 /// Makes `option` an output file that may be given as "-": standard output (written
 /// straight, as any device; the summary lines go to standard error anyway).
 CLI::Option* writes_file(CLI::Option* option);
@@ -143,14 +151,16 @@ int run_surface_mesh(const std::string& input, const DomainArgs& domain, const s
 struct SurfaceReportJob {
   std::string input;
   DomainArgs domain;
-  std::string json, svg, png_dir;
+  std::string json, svg;
+  PictureArgs pictures;
   int spectrum_window = 0;
 };
 int run_surface_report(const SurfaceReportJob& job);
 /// `disktune remesh`: a surface file in, a mesh of it with exactly `vertices` vertices
 /// out (remesh.h), its summary line, and optionally a JSON report.
 struct RemeshJob {
-  std::string input, output, json, png_dir;
+  std::string input, output, json;
+  PictureArgs pictures;
   std::string format;  // --format: empty for the output's extension
   std::size_t vertices = 0;
   std::string features = "60";

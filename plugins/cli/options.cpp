@@ -53,6 +53,25 @@ CLI::Option* add_threads_option(CLI::App* cmd, unsigned& threads, const std::str
       });
 }
 
+void add_picture_options(CLI::App* cmd, PictureArgs& args, const std::string& pictures) {
+  cmd->add_option("--picture-dir,--png-dir", args.dir,
+                  "Write " + pictures + " into this existing folder");
+  cmd->add_option("--picture-format", args.format,
+                  "The pictures as png (the default), pdf or svg (vectors and real text, for "
+                  "papers and slides; angles.pdf for angles.png)")
+      ->transform(CLI::Validator(
+          [](std::string& text) -> std::string {
+            std::string name = text;
+            for (char& c : name) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+            for (const PictureFormat f :
+                 {PictureFormat::png, PictureFormat::pdf, PictureFormat::svg}) {
+              if (name == extension(f)) return text = std::to_string(static_cast<int>(f)), "";
+            }
+            return "--picture-format must be png, pdf or svg, not '" + text + "'";
+          },
+          "png|pdf|svg", "picture format"));
+}
+
 namespace {
 bool quiet_flag = false;
 }  // namespace

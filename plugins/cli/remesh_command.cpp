@@ -36,10 +36,9 @@ void add_remesh_command(CLI::App& app, Action& action) {
       ->capture_default_str();
   add_threads_option(cmd, job->threads, "Threads for relaxation and the meshes");
   writes_file(cmd->add_option("--json", job->json, "Write the report (topology, angles, edges, Hausdorff distance) as JSON"));
-  cmd->add_option(
-      "--png-dir", job->png_dir,
-      "Write surface.png (the new mesh colored by each triangle's smallest angle), angles.png "
-      "and edges.png into this existing folder");
+  add_picture_options(cmd, job->pictures,
+                      "surface.png (the new mesh colored by each triangle's smallest angle), "
+                      "angles.png and edges.png");
   add_seed_option(cmd, job->seed);
   add_memory_option(cmd, job->max_memory);
   cmd->callback([job, &action] { action = [job] { return run_surface_remesh(*job); }; });

@@ -26,7 +26,8 @@ namespace {
 struct ReportArgs {
   std::string input;
   DomainArgs domain;
-  std::string json, svg, png_dir;
+  std::string json, svg;
+  PictureArgs pictures;
   bool no_spectrum = false;
   int spectrum_window = 0;  // 0: automatic
   unsigned threads = 0;     // 0: one per core
@@ -57,7 +58,8 @@ int run_planar_report(const ReportArgs& args, const CommandDomain& domain) {
   const PlanarMesh mesh = constrained_delaunay(packing, boundary_loops(packing, *domain.planar));
   const PlanarQualityReport q = measure_planar_quality(packing, mesh, domain.area());
   if (!args.json.empty()) write_json(args.json, quality_json(q));
-  if (!args.png_dir.empty()) write_report_pictures(args.png_dir, q, packing);
+  if (!args.pictures.dir.empty())
+    write_report_pictures(args.pictures.dir, q, packing, args.pictures.format);
   if (!args.svg.empty()) write_mesh_svg(args.svg, mesh, packing);
   say(
       "report: %zu disks (%zu on the boundary), eta = %.4f, rho = %.4f, %s, %s, distance >= "
@@ -79,10 +81,12 @@ int run_report(const ReportArgs& given) {
   std::vector<NamedFile> inputs = domain_files(args.domain);
   inputs.push_back({"the points file", args.input});
   check_files_apart(inputs, {{"--json", args.json}, {"--svg", args.svg}});
-  if (names_surface(args.domain)) return run_surface_report({args.input, args.domain, args.json, args.svg, args.png_dir, args.spectrum_window});
+  if (names_surface(args.domain))
+    return run_surface_report(
+        {args.input, args.domain, args.json, args.svg, args.pictures, args.spectrum_window});
   check_output_folder(args.json);
   check_output_folder(args.svg);
-  if (!args.png_dir.empty()) check_picture_folder(args.png_dir);
+  if (!args.pictures.dir.empty()) check_picture_folder(args.pictures.dir);
   const CommandDomain domain = open_domain(args.domain);
   if (domain.planar) return run_planar_report(args, domain);
   if (domain.sizing) {
@@ -108,7 +112,8 @@ int run_report(const ReportArgs& given) {
   const QualityReport q = measure_quality(packing, mesh, args.domain.radius);
   const Spectrum* s = spectrum ? &*spectrum : nullptr;
   if (!args.json.empty()) write_json(args.json, quality_json(q, s));
-  if (!args.png_dir.empty()) write_report_pictures(args.png_dir, q, s, &packing);
+  if (!args.pictures.dir.empty())
+    write_report_pictures(args.pictures.dir, q, s, &packing, args.pictures.format);
   if (!args.svg.empty()) write_mesh_svg(args.svg, mesh, packing);
   say(
       "report: %zu disks, eta = %.4f, rho = %.4f, %s, %s, distance >= %.4f r, "
@@ -137,11 +142,11 @@ void add_report_command(CLI::App& app, Action& action) {
   add_domain_options(cmd, args->domain);
   writes_file(cmd->add_option("--json", args->json, "Write the full report (with histograms) as JSON"));
   writes_file(cmd->add_option("--svg", args->svg, "Draw the mesh over the disks (at r/2) as an SVG picture"));
-  cmd->add_option("--png-dir", args->png_dir,
-                  "Write angles.png, edges.png and, in the plane, orientation.png (disks colored "
-                  "by their lattice orientation where locally hexagonal), in the periodic box "
-                  "spectrum.png, radial_mean.png and anisotropy.png, on a surface surface.png "
-                  "(the mesh colored by each triangle's smallest angle) into this existing folder");
+  add_picture_options(cmd, args->pictures,
+                      "angles.png, edges.png and, in the plane, orientation.png (disks colored "
+                      "by their lattice orientation where locally hexagonal), in the periodic box "
+                      "spectrum.png, radial_mean.png and anisotropy.png, on a surface surface.png "
+                      "(the mesh colored by each triangle's smallest angle)");
   cmd->add_flag("--no-spectrum", args->no_spectrum, "Skip the spectrum (seconds for 1e5 disks)");
   cmd->add_option("--spectrum-window", args->spectrum_window,
                   "Spectrum frequencies |kx|, |ky| < K (default: reach normalised frequency 3, "

@@ -26,7 +26,8 @@ namespace {
 struct RveJob {
   RveSpec spec;
   RveMeshSpec mesh;
-  std::string output, stats, msh, inp, png_dir, diameters;
+  std::string output, stats, msh, inp, diameters;
+  PictureArgs pictures;
   std::size_t realizations = 1;
   unsigned threads = 0;  // for the realizations; 0: one per core
   bool mesh_options = false;  // --fiber-segments or --element-size given
@@ -72,9 +73,9 @@ void write_statistics(const RveJob& job, const std::vector<Rve>& rves) {
     }
   }
   if (samples.size() != fibers.size()) samples.clear();  // a sample of under 7 fibers has no statistics
-  if (!job.png_dir.empty()) {  // the first realization's
-    write_fiber_pictures(job.png_dir, rves[0].cell, rves[0].centers, rves[0].diameters, fibers[0],
-                         samples.empty() ? nullptr : &samples[0]);
+  if (!job.pictures.dir.empty()) {                       // the first realization's
+    write_fiber_pictures(job.pictures.dir, rves[0].cell, rves[0].centers, rves[0].diameters,
+                         fibers[0], samples.empty() ? nullptr : &samples[0], job.pictures.format);
   }
   if (job.stats.empty()) return;
   if (rves.size() == 1) {
@@ -135,7 +136,7 @@ int run_rve(const RveJob& given) {
   outputs.push_back({"--stats", job.stats});
   check_files_apart({}, outputs);
   for (const std::string* file : {&job.output, &job.stats, &job.msh, &job.inp}) check_output_folder(*file);
-  if (!job.png_dir.empty()) check_picture_folder(job.png_dir);
+  if (!job.pictures.dir.empty()) check_picture_folder(job.pictures.dir);
   if (!job.diameters.empty()) job.spec.diameter_list = read_diameters_csv(job.diameters);
   const bool unequal = job.spec.diameter_cv != 0 || !job.spec.diameter_list.empty();
   const std::size_t count = rve_fiber_count(job.spec);  // fail before any work
@@ -175,7 +176,7 @@ int run_rve(const RveJob& given) {
     if (meshing) write_mesh(job, rve, k);
   }
   if (rves.size() > 1) say("rve: %zu realizations, %.3f s\n", rves.size(), seconds);
-  if (!job.stats.empty() || !job.png_dir.empty()) write_statistics(job, rves);
+  if (!job.stats.empty() || !job.pictures.dir.empty()) write_statistics(job, rves);
   if (!reached) {
     say(
                  "disktune: the fiber count was not reached: no phase makes progress beyond the counts above; "
@@ -222,10 +223,11 @@ void add_rve_command(CLI::App& app, Action& action) {
                   "fraction in windows 2 to 16 D wide; beside them the "
                   "same for the maximal sample it was tuned from (random sequential adsorption), complete "
                   "spatial randomness and the hexagonal lattice"));
-  cmd->add_option("--png-dir", job->png_dir,
-                  "Also draw into this existing folder: cell.png (the fibers), pair_correlation.png and "
-                  "ripley_l.png (L(r) - r; blue the arrangement, orange the maximal sample it was tuned "
-                  "from), nearest.png and psi6_local.png (histograms); of the first realization");
+  add_picture_options(
+      cmd, job->pictures,
+      "cell.png (the fibers), pair_correlation.png and ripley_l.png (L(r) - r; blue "
+      "the arrangement, orange the maximal sample it was tuned from), nearest.png and "
+      "psi6_local.png (histograms) of the first realization");
   writes_file(cmd->add_option("--msh", job->msh,
                   "Also write a periodic finite-element mesh of fibers and matrix as Gmsh MSH 4.1: "
                   "physical groups matrix, fibers, 'fiber K', left, right, bottom, top, corners; the "

@@ -259,7 +259,7 @@ int run_surface_report(const SurfaceReportJob& job) {
         "domain); on a surface write the mesh with 'disktune mesh' (.off, .obj, .ply, "
         ".vtk, .vtu, .msh, .stl) and use --json for the measures");
   }
-  if (!job.png_dir.empty()) check_picture_folder(job.png_dir);
+  if (!job.pictures.dir.empty()) check_picture_folder(job.pictures.dir);
   if (job.spectrum_window != 0) {
     throw InvalidInput(
         "report --spectrum-window: the spectrum needs the periodic box; a surface "
@@ -287,7 +287,8 @@ int run_surface_report(const SurfaceReportJob& job) {
     const std::string text = j.str();
     write_json(job.json, text);
   }
-  if (!job.png_dir.empty()) write_report_pictures(job.png_dir, q, m.mesh);
+  if (!job.pictures.dir.empty())
+    write_report_pictures(job.pictures.dir, q, m.mesh, job.pictures.format);
   say(
       "report: %zu disks%s, eta = %.4f, rho = %.4f, %s, %s; mesh: %zu vertices, %zu triangles, "
       "%s, angles %.2f..%.2f deg (mean |a-60| %.2f), beta <= %.4f, Hausdorff %.4g%s%s\n",
@@ -306,7 +307,7 @@ int run_surface_remesh(const RemeshJob& job) {
   const MeshFormat format = output_mesh_format(job.output, job.format, true);  // before any work
   check_output_folder(job.output);
   if (!job.json.empty()) check_output_folder(job.json);
-  if (!job.png_dir.empty()) check_picture_folder(job.png_dir);
+  if (!job.pictures.dir.empty()) check_picture_folder(job.pictures.dir);
   DomainArgs args;
   args.kind = job.input;
   args.features = job.features;
@@ -355,8 +356,8 @@ int run_surface_remesh(const RemeshJob& job) {
     const std::string text = j.str();
     write_json(job.json, text);
   }
-  if (!job.png_dir.empty() && !result.mesh.triangles.empty())
-    write_report_pictures(job.png_dir, q, result.mesh);
+  if (!job.pictures.dir.empty() && !result.mesh.triangles.empty())
+    write_report_pictures(job.pictures.dir, q, result.mesh, job.pictures.format);
   say(
       "remesh: %zu vertices (%s), %zu triangles, %zu edges along feature curves, %s, angles %.2f..%.2f deg, "
       "%.1f %% in [50,70], %.2f %% obtuse triangles, Hausdorff %.4g, r = %.6g, %.3f s -> %s%s%s\n",

@@ -30,7 +30,7 @@ std::string number(double v) {
 }  // namespace
 
 Plot::Plot(int width, int height, double x0, double x1, double y0, double y1, PlotText text)
-    : raster_(width, height, kWhite),
+    : drawing_(width, height, kWhite),
       text_(std::move(text)),
       left_(72),
       right_(width - 15),
@@ -45,7 +45,7 @@ double Plot::px(double x) const { return left_ + (x - x0_) / (x1_ - x0_) * (righ
 double Plot::py(double y) const { return bottom_ - (y - y0_) / (y1_ - y0_) * (bottom_ - top_); }
 
 void Plot::axes() {
-  Raster& r = raster_;
+  Drawing& r = drawing_;
   r.unclip();
   const double l = left_ + 0.5, rt = right_ + 0.5, t = top_ + 0.5, b = bottom_ + 0.5;
   r.polyline({{l, t}, {rt, t}, {rt, b}, {l, b}, {l, t}}, kBlack, 1);
@@ -53,16 +53,19 @@ void Plot::axes() {
   for (double v = std::ceil(x0_ / sx - 1e-9) * sx; v <= x1_ + 1e-9 * sx; v += sx) {
     const double x = std::round(px(v)) + 0.5;
     r.line(x, b, x, b + 4, kBlack);
-    r.text(x, b + 17, number(v), kNumberSize, kBlack, Raster::Align::center);
+    r.text(x, b + 17, number(v), kNumberSize, kBlack, Drawing::Align::center);
   }
   for (double v = std::ceil(y0_ / sy - 1e-9) * sy; v <= y1_ + 1e-9 * sy; v += sy) {
     const double y = std::round(py(v)) + 0.5;
     r.line(l - 4, y, l, y, kBlack);
-    r.text(l - 7, y + 4, number(v), kNumberSize, kBlack, Raster::Align::right);
+    r.text(l - 7, y + 4, number(v), kNumberSize, kBlack, Drawing::Align::right);
   }
-  r.text((left_ + right_) / 2.0, top_ - 12, text_.title, kTitleSize, kBlack, Raster::Align::center);
-  r.text((left_ + right_) / 2.0, r.height() - 10, text_.x_axis, kLabelSize, kBlack, Raster::Align::center);
-  r.text(18, (top_ + bottom_) / 2.0, text_.y_axis, kLabelSize, kBlack, Raster::Align::center, true);
+  r.text((left_ + right_) / 2.0, top_ - 12, text_.title, kTitleSize, kBlack,
+         Drawing::Align::center);
+  r.text((left_ + right_) / 2.0, r.height() - 10, text_.x_axis, kLabelSize, kBlack,
+         Drawing::Align::center);
+  r.text(18, (top_ + bottom_) / 2.0, text_.y_axis, kLabelSize, kBlack, Drawing::Align::center,
+         true);
   if (legend_.empty()) return;
   // Top right inside the frame, on white: a line sample and the name of each entry.
   double widest = 0;
@@ -80,21 +83,22 @@ void Plot::axes() {
 void Plot::reference(double y, Rgb color, const std::string& name) {
   if (!name.empty()) legend_.push_back({name, color, true});
   if (y < y0_ || y > y1_) return;
-  raster_.line(left_, py(y), right_, py(y), color, 1.5, true);
+  drawing_.line(left_, py(y), right_, py(y), color, 1.5, true);
 }
 
 void Plot::polyline(const std::vector<std::array<double, 2>>& points, Rgb color, const std::string& name) {
   if (!name.empty()) legend_.push_back({name, color, false});
   std::vector<std::array<double, 2>> pixels;
   for (const auto& p : points) pixels.push_back({px(p[0]), py(p[1])});
-  raster_.clip(left_, top_, right_ + 1, bottom_ + 1);
-  raster_.polyline(pixels, color);
-  raster_.unclip();
+  drawing_.clip(left_, top_, right_ + 1, bottom_ + 1);
+  drawing_.polyline(pixels, color);
+  drawing_.unclip();
 }
 
 void Plot::bar(double xa, double xb, double y, Rgb color) {
   const int a = static_cast<int>(std::lround(px(xa))), b = std::max(static_cast<int>(std::lround(px(xb))) - 1, a);
-  raster_.fill_rect(a, static_cast<int>(std::lround(py(0))), b, std::max(static_cast<int>(std::lround(py(y))), top_), color);
+  drawing_.fill_rect(a, static_cast<int>(std::lround(py(0))), b,
+                     std::max(static_cast<int>(std::lround(py(y))), top_), color);
 }
 
 }  // namespace disktune::detail

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Line plots and bar charts on a Raster (internal): a frame with numbered ticks, a
+// Line plots and bar charts on a Drawing (internal): a frame with numbered ticks, a
 // title, axis titles and a legend, and a map from data to pixels; the report's and the
 // fiber statistics' pictures.
 #pragma once
@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include "raster.h"
+#include "drawing.h"
 
 namespace disktune::detail {
 
@@ -33,8 +33,8 @@ class Plot {
   /// A bar over [xa, xb] from 0 up to y.
   void bar(double xa, double xb, double y, Rgb color);
 
-  const Raster& raster() const { return raster_; }
-  Raster& raster() { return raster_; }
+  const Drawing& drawing() const { return drawing_; }
+  Drawing& drawing() { return drawing_; }
 
  private:
   double px(double x) const;
@@ -45,7 +45,7 @@ class Plot {
     Rgb color;
     bool dashed;
   };
-  Raster raster_;
+  Drawing drawing_;
   PlotText text_;
   std::vector<Entry> legend_;
   int left_, right_, top_, bottom_;  // the plot area in pixels

@@ -9,17 +9,25 @@
 #include <vector>
 
 #include "disktune/errors.h"
+#include "drawing.h"
 #include "plot.h"
-#include "raster.h"
 #include "spectrum_layout.h"
 
 namespace disktune {
 namespace {
 
+using detail::Drawing;
 using detail::Plot;
-using detail::Raster;
 using detail::PlotText;
 using detail::Rgb;
+
+// Pictures by file stem ("angles"), all drawn before any is written.
+using Pictures = std::vector<std::pair<std::string, Drawing>>;
+
+void write_pictures(const std::string& dir, const Pictures& pictures, PictureFormat format) {
+  for (const auto& [stem, drawing] : pictures)
+    detail::write_picture(dir + "/" + stem + "." + extension(format), drawing, format);
+}
 
 constexpr int kWidth = 640, kHeight = 400;
 constexpr Rgb kBlue{31, 90, 180};
@@ -33,20 +41,21 @@ constexpr double kLogLo = -2, kLogHi = 1;
 
 // The powers as gray levels (log10 P from kLogLo, black, to kLogHi, white), framed by
 // the normalised frequency along kx and ky, with a gray bar for the scale.
-Raster spectrum_image(const Spectrum& s) {
+Drawing spectrum_image(const Spectrum& s) {
   const int side = s.side(), K = s.window;
   const detail::SpectrumLayout at = detail::spectrum_layout(s);
   const int extent = side * at.zoom, bar = at.left + extent + 30;
-  Raster r(bar + 90, at.top + extent + 50, kWhiteBg);
+  Drawing r(bar + 90, at.top + extent + 50, kWhiteBg);
+  std::vector<Rgb> gray(static_cast<std::size_t>(side) * side);
   for (int row = 0; row < side; ++row) {
     for (int col = 0; col < side; ++col) {
       const double p = s.at(col - (K - 1), (K - 1) - row);  // top row is the highest ky
       const double t = p > 0 ? (std::log10(p) - kLogLo) / (kLogHi - kLogLo) : 0;
       const auto g = static_cast<std::uint8_t>(std::lround(255 * std::clamp(t, 0.0, 1.0)));
-      const int x = at.left + col * at.zoom, y = at.top + row * at.zoom;
-      r.fill_rect(x, y, x + at.zoom - 1, y + at.zoom - 1, {g, g, g});
+      gray[static_cast<std::size_t>(row) * side + col] = {g, g, g};
     }
   }
+  r.image(at.left, at.top, side, side, at.zoom, at.zoom, gray);
   // Ticks at round normalised frequencies: (kx, ky) = (k W, k H) / unit for frequency k.
   const double center_x = at.left + (K - 1 + 0.5) * at.zoom, center_y = at.top + (K - 1 + 0.5) * at.zoom;
   const double reach = (K - 1) * s.frequency_unit / std::max(s.width, s.height);
@@ -56,19 +65,23 @@ Raster spectrum_image(const Spectrum& s) {
     char label[16];
     std::snprintf(label, sizeof label, "%g", std::abs(f) < 1e-12 ? 0.0 : f);
     r.line(center_x + dx, at.top + extent, center_x + dx, at.top + extent + 4, kBlack);
-    r.text(center_x + dx, at.top + extent + 16, label, 11, kBlack, Raster::Align::center);
+    r.text(center_x + dx, at.top + extent + 16, label, 11, kBlack, Drawing::Align::center);
     r.line(at.left - 4, center_y - dy, at.left, center_y - dy, kBlack);
-    r.text(at.left - 7, center_y - dy + 4, label, 11, kBlack, Raster::Align::right);
+    r.text(at.left - 7, center_y - dy + 4, label, 11, kBlack, Drawing::Align::right);
   }
-  r.text(at.left + extent / 2.0, at.top - 14, "Power spectrum P(k), gray scale of log10 P", 15, kBlack,
-         Raster::Align::center);
-  r.text(at.left + extent / 2.0, at.top + extent + 38, "kx (normalised frequency)", 13, kBlack, Raster::Align::center);
-  r.text(24, at.top + extent / 2.0, "ky (normalised frequency)", 13, kBlack, Raster::Align::center, true);
+  r.text(at.left + extent / 2.0, at.top - 14, "Power spectrum P(k), gray scale of log10 P", 15,
+         kBlack, Drawing::Align::center);
+  r.text(at.left + extent / 2.0, at.top + extent + 38, "kx (normalised frequency)", 13, kBlack,
+         Drawing::Align::center);
+  r.text(24, at.top + extent / 2.0, "ky (normalised frequency)", 13, kBlack, Drawing::Align::center,
+         true);
   // The scale: a gray ramp from black (log10 P = kLogLo) at the bottom to white at the top.
+  std::vector<Rgb> ramp(extent);
   for (int y = 0; y < extent; ++y) {
     const auto g = static_cast<std::uint8_t>(std::lround(255.0 * (extent - 1 - y) / std::max(1, extent - 1)));
-    r.fill_rect(bar, at.top + y, bar + 18, at.top + y, {g, g, g});
+    ramp[y] = {g, g, g};
   }
+  r.image(bar, at.top, 1, extent, 19, 1, ramp);
   r.polyline({{bar - 0.5, at.top - 0.5}, {bar + 18.5, at.top - 0.5}, {bar + 18.5, at.top + extent + 0.5},
               {bar - 0.5, at.top + extent + 0.5}, {bar - 0.5, at.top - 0.5}},
              kBlack, 1);
@@ -79,14 +92,15 @@ Raster spectrum_image(const Spectrum& s) {
     r.line(bar + 18, y, bar + 22, y, kBlack);
     r.text(bar + 25, y + 4, label, 11, kBlack);
   }
-  r.text(bar + 75, at.top + extent / 2.0, "log10 P", 13, kBlack, Raster::Align::center, true);
+  r.text(bar + 75, at.top + extent / 2.0, "log10 P", 13, kBlack, Drawing::Align::center, true);
   return r;
 }
 
 /// The y range covers [y_lo, y_hi] and the data, but stops at y_cap, so that a lattice's
 /// spikes do not flatten the rest (lines past the cap leave through the frame).
-Raster line_plot(const std::vector<std::array<double, 2>>& points, double reference, const std::string& reference_name,
-                 double y_lo, double y_hi, double y_cap, PlotText text) {
+Drawing line_plot(const std::vector<std::array<double, 2>>& points, double reference,
+                  const std::string& reference_name, double y_lo, double y_hi, double y_cap,
+                  PlotText text) {
   double x_hi = 0;
   for (const auto& p : points) {
     x_hi = std::max(x_hi, p[0]);
@@ -97,15 +111,15 @@ Raster line_plot(const std::vector<std::array<double, 2>>& points, double refere
   plot.reference(reference, kGray, reference_name);
   plot.polyline(points, kBlue, "this packing");
   plot.axes();
-  return std::move(plot.raster());
+  return std::move(plot.drawing());
 }
 
 /// The histogram's bars over the span of its non-empty bins (overflow not drawn).
-Raster histogram_plot(const Histogram& h, PlotText text) {
+Drawing histogram_plot(const Histogram& h, PlotText text) {
   if (h.counts.empty()) {
     Plot empty(kWidth, kHeight, 0, 1, 0, 1, std::move(text));
     empty.axes();
-    return std::move(empty.raster());
+    return std::move(empty.drawing());
   }
   std::size_t first = h.counts.size(), last = 0, top = 1;
   for (std::size_t k = 0; k < h.counts.size(); ++k) {
@@ -125,19 +139,20 @@ Raster histogram_plot(const Histogram& h, PlotText text) {
     plot.bar(x, x + h.bin_width, static_cast<double>(h.counts[k]), kBlue);
   }
   plot.axes();
-  return std::move(plot.raster());
+  return std::move(plot.drawing());
 }
 
 // Disks in a w x h cell, 800 pixels across: a pixel takes disk i's color when its
 // center lies in that disk (or, in a periodic cell, one of its periodic images), found
 // from the disks whose box covers the pixel's row.
-Raster disks_image(double w, double h, const std::vector<Vec2>& centers,
-                   const std::vector<double>& radii, const std::vector<Rgb>& colors,
-                   bool periodic = true) {
+Drawing disks_image(double w, double h, const std::vector<Vec2>& centers,
+                    const std::vector<double>& radii, const std::vector<Rgb>& colors,
+                    bool periodic = true) {
   constexpr int kCellWidth = 800;
   const double scale = kCellWidth / w;
   const int height = std::max(1, static_cast<int>(std::lround(h * scale)));
-  Raster r(kCellWidth, height, {255, 255, 255});
+  // Pixel rows of each disk into one image (PDF and SVG embed it: no seams, small files).
+  std::vector<Rgb> pixels(static_cast<std::size_t>(kCellWidth) * height, Rgb{255, 255, 255});
   for (std::size_t i = 0; i < centers.size(); ++i) {
     const Vec2 c = centers[i];
     const double radius = radii[i];
@@ -154,17 +169,20 @@ Raster disks_image(double w, double h, const std::vector<Vec2>& centers,
           const double reach = std::sqrt(half);
           const int x0 = std::max(0, static_cast<int>(std::ceil((cx - reach) * scale - 0.5)));
           const int x1 = std::min(kCellWidth - 1, static_cast<int>(std::floor((cx + reach) * scale - 0.5)));
-          if (x0 <= x1) r.fill_rect(x0, py, x1, py, colors[i]);
+          for (int px = x0; px <= x1; ++px)
+            pixels[static_cast<std::size_t>(py) * kCellWidth + px] = colors[i];
         }
       }
     }
   }
+  Drawing r(kCellWidth, height, {255, 255, 255});
+  r.image(0, 0, kCellWidth, height, 1, 1, pixels);
   return r;
 }
 
 // The fibers in blue.
-Raster cell_image(const PeriodicBox& cell, const std::vector<Vec2>& centers,
-                  const std::vector<double>& diameters) {
+Drawing cell_image(const PeriodicBox& cell, const std::vector<Vec2>& centers,
+                   const std::vector<double>& diameters) {
   std::vector<double> radii;
   for (const double d : diameters) radii.push_back(d / 2);
   return disks_image(cell.width(), cell.height(), centers, radii,
@@ -197,7 +215,7 @@ Rgb orientation_color(double degrees) {
 // Each disk (drawn at half its radius: the disks of the area fraction, which do not
 // overlap) colored by its lattice orientation where it is locally hexagonal, light gray
 // where it is not.
-Raster orientation_image(const Packing& packing, const BondOrder& order) {
+Drawing orientation_image(const Packing& packing, const BondOrder& order) {
   std::vector<Vec2> centers;
   std::vector<double> radii;
   std::vector<Rgb> colors;
@@ -212,8 +230,8 @@ Raster orientation_image(const Packing& packing, const BondOrder& order) {
   return disks_image(frame.extent.x, frame.extent.y, centers, radii, colors, frame.periodic);
 }
 
-Raster curves_plot(const FiberStatistics& stats, const FiberStatistics* sample, double reference,
-                   double (*value)(const FiberStatistics&, std::size_t), PlotText text) {
+Drawing curves_plot(const FiberStatistics& stats, const FiberStatistics* sample, double reference,
+                    double (*value)(const FiberStatistics&, std::size_t), PlotText text) {
   const auto curve = [&](const FiberStatistics& s) {
     std::vector<std::array<double, 2>> points;
     for (std::size_t i = 0; i < s.r.size(); ++i) points.push_back({s.r[i], value(s, i)});
@@ -232,34 +250,44 @@ Raster curves_plot(const FiberStatistics& stats, const FiberStatistics* sample, 
   if (sample) plot.polyline(rsa, kOrange, "maximal sample it was tuned from");
   plot.polyline(fibers, kBlue, "this arrangement");
   plot.axes();
-  return std::move(plot.raster());
+  return std::move(plot.drawing());
 }
 
 }  // namespace
 
-void write_fiber_pictures(const std::string& dir, const PeriodicBox& cell, const std::vector<Vec2>& centers,
-                          const std::vector<double>& diameters, const FiberStatistics& stats,
-                          const FiberStatistics* sample) {
+void write_fiber_pictures(const std::string& dir, const PeriodicBox& cell,
+                          const std::vector<Vec2>& centers, const std::vector<double>& diameters,
+                          const FiberStatistics& stats, const FiberStatistics* sample,
+                          PictureFormat format) {
   check_picture_folder(dir);
   if (diameters.size() != centers.size()) {
     throw InvalidInput("fiber pictures: " + std::to_string(centers.size()) + " fibers but " +
                        std::to_string(diameters.size()) + " diameters; give one diameter per fiber");
   }
-  std::vector<std::pair<std::string, Raster>> pictures;
-  pictures.emplace_back("cell.png", cell_image(cell, centers, diameters));
-  pictures.emplace_back("pair_correlation.png",
-                        curves_plot(stats, sample, 1, [](const FiberStatistics& s, std::size_t i) {
-                          return s.pair_correlation[i];
-                        }, {"Pair correlation g(r)", "r / D (D: mean fiber diameter)", "g(r)"}));
-  pictures.emplace_back("ripley_l.png", curves_plot(stats, sample, 0, [](const FiberStatistics& s, std::size_t i) {
-                          return s.ripley_l[i] - s.r[i];
-                        }, {"Ripley's L(r) - r", "r / D", "(L(r) - r) / D"}));
-  pictures.emplace_back("nearest.png", histogram_plot(stats.nearest_histogram[0],
-                                                      {"Nearest neighbour distance", "center distance / D", "fibers"}));
-  pictures.emplace_back("psi6_local.png", histogram_plot(stats.psi6_local, {"Local bond order |psi6| (1: hexagonal)",
-                                                                            "|psi6| of a fiber's 6 nearest bonds",
-                                                                            "fibers"}));
-  for (const auto& [name, raster] : pictures) detail::write_png(dir + "/" + name, raster);
+  Pictures pictures;
+  pictures.emplace_back("cell", cell_image(cell, centers, diameters));
+  pictures.emplace_back(
+      "pair_correlation",
+      curves_plot(stats, sample, 1,
+                  [](const FiberStatistics& s, std::size_t i) { return s.pair_correlation[i]; },
+                  {"Pair correlation g(r)", "r / D (D: mean fiber diameter)", "g(r)"}));
+  pictures.emplace_back("ripley_l", curves_plot(stats, sample, 0,
+                                                [](const FiberStatistics& s, std::size_t i) {
+                                                  return s.ripley_l[i] - s.r[i];
+                                                },
+                                                {"Ripley's L(r) - r", "r / D", "(L(r) - r) / D"}));
+  pictures.emplace_back(
+      "nearest", histogram_plot(stats.nearest_histogram[0],
+                                {"Nearest neighbour distance", "center distance / D", "fibers"}));
+  pictures.emplace_back(
+      "psi6_local",
+      histogram_plot(stats.psi6_local, {"Local bond order |psi6| (1: hexagonal)",
+                                        "|psi6| of a fiber's 6 nearest bonds", "fibers"}));
+  write_pictures(dir, pictures, format);
+}
+
+std::string extension(PictureFormat format) {
+  return format == PictureFormat::pdf ? "pdf" : format == PictureFormat::svg ? "svg" : "png";
 }
 
 void check_picture_folder(const std::string& dir) {
@@ -286,7 +314,7 @@ Rgb red_to_green(double t, double light) {
 // triangles first, each shaded by how squarely it faces that way and colored by its
 // smallest angle: 30 degrees (the bound a one-radius maximal packing guarantees) and
 // below red, through yellow at 45, to green at 60 (equilateral).
-Raster surface_image(const SurfaceMesh& mesh) {
+Drawing surface_image(const SurfaceMesh& mesh) {
   constexpr int kWidth = 800, kTop = 40, kBottom = 50, kMargin = 20;
   const double s3 = 1 / std::sqrt(3.0), s2 = 1 / std::sqrt(2.0), s6 = 1 / std::sqrt(6.0);
   const Vec3 toward{s3, s3, s3}, right{s2, 0, -s2}, up{-s6, 2 * s6, -s6};
@@ -301,7 +329,7 @@ Raster surface_image(const SurfaceMesh& mesh) {
   const double scale =
       std::min((kWidth - 2.0 * kMargin) / span_x, (kWidth - 2.0 * kMargin) / span_y);
   const int height = kTop + kBottom + 2 * kMargin + static_cast<int>(std::ceil(span_y * scale));
-  Raster r(kWidth, height, kWhiteBg);
+  Drawing r(kWidth, height, kWhiteBg);
   const double x0 = (kWidth - span_x * scale) / 2;
   const auto pixel = [&](std::uint32_t v) {
     return std::array<double, 2>{x0 + (at[v][0] - lo_x) * scale,
@@ -323,74 +351,73 @@ Raster surface_image(const SurfaceMesh& mesh) {
     r.fill_polygon({pixel(tri[0]), pixel(tri[1]), pixel(tri[2])},
                    red_to_green((smallest[t] - 30) / 30, 0.35 + 0.65 * facing));
   }
-  r.text(kWidth / 2.0, 26, "Triangles by their smallest angle", 15, kBlack, Raster::Align::center);
+  r.text(kWidth / 2.0, 26, "Triangles by their smallest angle", 15, kBlack, Drawing::Align::center);
   // The color bar: 30 to 60 degrees.
   const int bar_y = height - 38, bar_x = kWidth / 2 - 150;
-  for (int k = 0; k < 300; ++k)
-    r.fill_rect(bar_x + k, bar_y, bar_x + k, bar_y + 10, red_to_green(k / 299.0, 1));
-  r.text(bar_x - 8, bar_y + 10, "30 deg or less", 12, kBlack, Raster::Align::right);
+  std::vector<Rgb> bar(300);
+  for (int k = 0; k < 300; ++k) bar[k] = red_to_green(k / 299.0, 1);
+  r.image(bar_x, bar_y, 300, 1, 1, 11, bar);
+  r.text(bar_x - 8, bar_y + 10, "30 deg or less", 12, kBlack, Drawing::Align::right);
   r.text(bar_x + 308, bar_y + 10, "60 deg", 12, kBlack);
   r.text(kWidth / 2.0, bar_y + 28, "smallest angle of the triangle", 12, kBlack,
-         Raster::Align::center);
+         Drawing::Align::center);
   return r;
 }
-
-using Pictures = std::vector<std::pair<std::string, Raster>>;
 
 // angles.png and edges.png of a mesh: `triangles` names them in the titles, `length` is
 // the edge-length axis.
 void add_mesh_histograms(Pictures& pictures, const QualityReport::Angles& angles,
                          const QualityReport::Edges& edges, const std::string& triangles,
                          const std::string& length) {
+  pictures.emplace_back("angles", histogram_plot(angles.histogram, {"Angles of the " + triangles,
+                                                                    "angle (degrees)", "angles"}));
   pictures.emplace_back(
-      "angles.png", histogram_plot(angles.histogram,
-                                   {"Angles of the " + triangles, "angle (degrees)", "angles"}));
-  pictures.emplace_back(
-      "edges.png",
+      "edges",
       histogram_plot(edges.histogram, {"Edge lengths of the " + triangles, length, "edges"}));
 }
 
 }  // namespace
 
 void write_report_pictures(const std::string& dir, const SurfaceMeshQuality& quality,
-                           const SurfaceMesh& mesh) {
+                           const SurfaceMesh& mesh, PictureFormat format) {
   check_picture_folder(dir);
   Pictures pictures;
-  pictures.emplace_back("surface.png", surface_image(mesh));
+  pictures.emplace_back("surface", surface_image(mesh));
   add_mesh_histograms(pictures, quality.angles, quality.edges, "restricted Delaunay triangles",
                       "length / r (the mean radius of its ends)");
-  for (const auto& [name, raster] : pictures) detail::write_png(dir + "/" + name, raster);
+  write_pictures(dir, pictures, format);
 }
 
 void write_report_pictures(const std::string& dir, const PlanarQualityReport& report,
-                           const Packing& packing) {
+                           const Packing& packing, PictureFormat format) {
   check_picture_folder(dir);
-  std::vector<std::pair<std::string, Raster>> pictures;
+  Pictures pictures;
   if (report.order.count == packing.size())
-    pictures.emplace_back("orientation.png", orientation_image(packing, report.order));
+    pictures.emplace_back("orientation", orientation_image(packing, report.order));
   add_mesh_histograms(pictures, report.all.angles, report.all.edges,
                       "constrained Delaunay triangles", "length / r (the mean radius of its ends)");
-  for (const auto& [name, raster] : pictures) detail::write_png(dir + "/" + name, raster);
+  write_pictures(dir, pictures, format);
 }
 
 void write_report_pictures(const std::string& dir, const QualityReport& report,
-                           const Spectrum* spectrum, const Packing* packing) {
+                           const Spectrum* spectrum, const Packing* packing, PictureFormat format) {
   check_picture_folder(dir);
-  std::vector<std::pair<std::string, Raster>> pictures;
+  Pictures pictures;
   if (packing && report.order.count == packing->size())
-    pictures.emplace_back("orientation.png", orientation_image(*packing, report.order));
+    pictures.emplace_back("orientation", orientation_image(*packing, report.order));
   add_mesh_histograms(pictures, report.angles, report.edges, "Delaunay triangles", "length / r");
   if (spectrum) {
-    pictures.emplace_back("spectrum.png", spectrum_image(*spectrum));
-    pictures.emplace_back("radial_mean.png",
-                          line_plot(spectrum->radial_mean, 1, "white noise (P = 1)", 0, 2, 4,
-                                    {"Radial mean of the power spectrum", "normalised frequency", "mean power P"}));
-    pictures.emplace_back("anisotropy.png",
+    pictures.emplace_back("spectrum", spectrum_image(*spectrum));
+    pictures.emplace_back(
+        "radial_mean",
+        line_plot(spectrum->radial_mean, 1, "white noise (P = 1)", 0, 2, 4,
+                  {"Radial mean of the power spectrum", "normalised frequency", "mean power P"}));
+    pictures.emplace_back("anisotropy",
                           line_plot(spectrum->anisotropy_db, 0, "0 dB", -10, 10, 30,
                                     {"Anisotropy of the power spectrum", "normalised frequency",
                                      "10 log10(variance / mean^2) (dB)"}));
   }
-  for (const auto& [name, raster] : pictures) detail::write_png(dir + "/" + name, raster);
+  write_pictures(dir, pictures, format);
 }
 
 }  // namespace disktune
