@@ -103,7 +103,7 @@ expect no-output-note-tune 0 "note: no --output given: the 320 disks were not wr
 # Progress goes to a log too (plain lines, here at every update instead of every 10 s: a fixed
 # interval would make the check depend on the machine's speed), with the time so far
 DISKTUNE_PROGRESS_SECONDS=0 "$bin" tune --radius 0.01 --target-fraction 0.7 2>progress.log >/dev/null &&
-  grep -qE "^tune: +[0-9.]+ %, [0-9]+/[0-9]+ disks, eta 0\.[0-9]+, [a-z ]+, [0-9.]+ s so far$" progress.log &&
+  grep -qE "^tune: [a-z ]+: [0-9]+ %, about [0-9.]+ s left; [0-9]+/[0-9]+ disks, eta 0\.[0-9]+, [0-9.]+ s so far$" progress.log &&
   ! grep -q $'\r' progress.log && pass=$((pass + 1)) || { echo "FAIL progress lines in a log"; cat progress.log; fails=$((fails + 1)); }
 expect bad-domain 2 "domain" -- "$bin" sample --domain sphere --radius 0.1
 expect bad-folder 3 "does not exist" -- "$bin" sample --radius 0.1 --output no/such/dir/z.csv

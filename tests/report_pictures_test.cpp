@@ -281,7 +281,6 @@ TEST(ReportPictures, PdfAndSvgPicturesAreVectorsWithRealTextOnThePngsPage) {
     EXPECT_EQ(b.rfind("<?xml", 0), 0u) << stem;
     EXPECT_NE(b.find("viewBox=\"0 0 " + size + "\""), std::string::npos) << stem;
     EXPECT_NE(b.find("</svg>"), std::string::npos) << stem << ": not finished";
-    if (stem == "orientation") continue;  // disks only, no words
     EXPECT_NE(a.find("/FontFile"), std::string::npos) << stem << ": no embedded font";
     // Text shown with the text operators (a title and axis titles at least), not paths.
     EXPECT_GE(occurrences(pdf_streams(a), std::regex("\\bT[Jj]\\b")), 3u) << stem;

@@ -44,6 +44,7 @@
 #include "disktune/surface_tuning.h"
 #include "disktune/surface_voids.h"
 #include "disktune/threads.h"
+#include "disktune/time_left.h"
 #include "disktune/tolerance.h"
 #include "disktune/tuning.h"
 #include "disktune/vec3.h"

@@ -27,7 +27,8 @@ std::string extension(PictureFormat format);
 /// normalised frequency, dashed gray references at 1 and 0 dB, y cut at 4 and +-30 dB);
 /// when the packing measured is given, orientation.png (its disks at half their radius,
 /// 800 pixels across, each locally hexagonal one colored by its lattice orientation
-/// around the color wheel over 60 degrees, the others light gray). Every picture is drawn
+/// around the color wheel over 60 degrees, the others light gray; a title above, the
+/// hues' legend below). Every picture is drawn
 /// before any file is written, and each file is written atomically. Throws IoError when
 /// `dir` is not an existing folder (nothing written) or a file cannot be written.
 void write_report_pictures(const std::string& dir, const QualityReport& report,

@@ -87,6 +87,9 @@ struct Progress {
   std::size_t count;
   double area_fraction;
   Phase phase;
+  /// The count at which the phase ends at the latest: the target, or sooner where the
+  /// automatic schedule moves on at an area fraction (it may also stall before).
+  std::size_t phase_goal = 0;
 };
 
 struct TuneOptions {

@@ -128,13 +128,13 @@ double relax_spacing(std::size_t count, double unit);
 std::string relaxed_text(int sweeps);
 
 /// What `tune` does alike on the plane and on a surface (tune_command.cpp). Runs
-/// `run(options)` with `method` and a progress bar from `start` disks towards `target`.
+/// `run(options)` with `method` and a progress bar towards `target` disks.
 /// Should the result fail the library's final check (InternalError: the library put
 /// the packing back to a valid state), `write_output` writes that packing to `output`,
 /// if one was asked for, before the error goes on.
-TuneResult tune_with_progress(std::size_t start, std::size_t target, Method method,
-                              const std::function<TuneResult(const TuneOptions&)>& run, const std::string& output,
-                              const std::function<void()>& write_output);
+TuneResult tune_with_progress(std::size_t target, Method method,
+                              const std::function<TuneResult(const TuneOptions&)>& run,
+                              const std::string& output, const std::function<void()>& write_output);
 /// Prints the result line, "tune: START -> COUNT disks (target ...), DENSITY, phase ...,
 /// SECONDS s" then `where` (e.g. " (r = 0.1, the surface ...)") and " -> OUTPUT" when
 /// one was written; when the target was not reached, also why, on stderr. `density` is

@@ -2,7 +2,7 @@
 // Progress on stderr: on a terminal a one-line bar redrawn at most ten times a second;
 // elsewhere (a log, a pipe) a plain line every ten seconds (DISKTUNE_PROGRESS_SECONDS
 // sets another interval, 0 a line at every update), none for a job shorter than that. Both
-// show the time so far.
+// show the time so far; the caller's status says what the fraction is of.
 #pragma once
 
 #include <unistd.h>
@@ -32,24 +32,29 @@ class ProgressBar {
   }
   ~ProgressBar() { clear(); }
 
-  /// Shows `done` of `total`, with a short status after it.
-  void update(double done, double total, const std::string& status) {
+  /// Seconds since the bar was made.
+  double seconds() const {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  }
+
+  /// Shows the bar filled to `fraction` (0 to 1; the status says what of), with a short
+  /// status after it.
+  void update(double fraction, const std::string& status) {
     using namespace std::chrono;
     if (quiet()) return;
     const auto now = steady_clock::now();
     if (now - last_ < (terminal_ ? duration<double>(0.1) : log_every_)) return;
     last_ = now;
-    const double f = total > 0 ? std::min(std::max(done / total, 0.0), 1.0) : 0.0;
+    const double f = fraction >= 0 ? std::min(fraction, 1.0) : 0.0;  // NaN: empty
     const double seconds = duration<double>(now - start_).count();
     if (!terminal_) {
-      std::fprintf(stderr, "%s: %5.1f %%, %s, %.1f s so far\n", what_.c_str(), 100 * f,
-                   status.c_str(), seconds);
+      std::fprintf(stderr, "%s: %s, %.1f s so far\n", what_.c_str(), status.c_str(), seconds);
       return;
     }
     constexpr int kWidth = 30;
     const int full = static_cast<int>(f * kWidth + 0.5);
-    std::fprintf(stderr, "\r[%s%s] %5.1f%% %s, %.1f s\033[K", std::string(full, '#').c_str(),
-                 std::string(kWidth - full, '.').c_str(), 100 * f, status.c_str(), seconds);
+    std::fprintf(stderr, "\r[%s%s] %s, %.1f s\033[K", std::string(full, '#').c_str(),
+                 std::string(kWidth - full, '.').c_str(), status.c_str(), seconds);
     std::fflush(stderr);
     drawn_ = true;
   }

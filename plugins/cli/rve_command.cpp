@@ -47,14 +47,15 @@ std::vector<Rve> make_all(const RveJob& job, std::size_t count) {
   try {
     if (job.realizations > 1) return make_rves(job.spec, job.realizations, job.threads);
     std::vector<Rve> one(1);
-    tune_with_progress(0, count, Method::automatic,
-                       [&](const TuneOptions& options) {
-                         RveSpec spec = job.spec;
-                         spec.tune = options;
-                         one[0] = make_rve(spec);
-                         return one[0].tuning;
-                       },
-                       "", [] {});
+    tune_with_progress(
+        count, Method::automatic,
+        [&](const TuneOptions& options) {
+          RveSpec spec = job.spec;
+          spec.tune = options;
+          one[0] = make_rve(spec);
+          return one[0].tuning;
+        },
+        "", [] {});
     return one;
   } catch (const InvalidInput& e) {
     if (e.remedy() != InvalidInput::Remedy::memory) throw;

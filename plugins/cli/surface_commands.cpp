@@ -165,7 +165,8 @@ int run_surface_tune(const TuneJob& job) {
 
   const auto write_output = [&] { write_surface_csv(job.output, packing); };
   const TuneResult res = tune_with_progress(
-      start, target, job.method, [&](const TuneOptions& options) { return tune(packing, job.target, rng, options); },
+      target, job.method,
+      [&](const TuneOptions& options) { return tune(packing, job.target, rng, options); },
       job.output, write_output);
   const double spacing = relax_spacing(packing.size(), domain.unit);
   relax(packing, spacing, job.relax_sweeps, rng, {}, job.threads);
@@ -326,13 +327,14 @@ int run_surface_remesh(const RemeshJob& job) {
   options.threads = job.threads;
   const auto t0 = std::chrono::steady_clock::now();
   RemeshResult result;
-  tune_with_progress(0, job.vertices, Method::automatic,
-                     [&](const TuneOptions& tune_options) {
-                       options.tune = tune_options;
-                       result = remesh(surface, job.vertices, options);
-                       return result.tuning;
-                     },
-                     "", [] {});
+  tune_with_progress(
+      job.vertices, Method::automatic,
+      [&](const TuneOptions& tune_options) {
+        options.tune = tune_options;
+        result = remesh(surface, job.vertices, options);
+        return result.tuning;
+      },
+      "", [] {});
   const double seconds = seconds_since(t0);
   if (!result.grading_note.empty()) say("disktune: note: %s\n", result.grading_note.c_str());
   write_surface_mesh(job.output, result.mesh, format);

@@ -2,6 +2,7 @@
 // `disktune tune`: from an MPS (made here, or read with --input) to exactly the
 // number of disks asked for, by disk injection or ejection.
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -12,6 +13,7 @@
 #include "disktune/errors.h"
 #include "disktune/io.h"
 #include "disktune/sampling.h"
+#include "disktune/time_left.h"
 #include "disktune/tuning.h"
 #include "disktune/voids.h"
 #include "progress_bar.h"
@@ -53,9 +55,9 @@ int run_tune(const TuneJob& given) {
 
   const auto write_output = [&] { write_points_csv(job.output, packing); };
   const TuneResult res = tune_with_progress(
-      start, target, job.method,
-      [&](const TuneOptions& options) { return domain.tune(packing, job.target, rng, options); }, job.output,
-      write_output);
+      target, job.method,
+      [&](const TuneOptions& options) { return domain.tune(packing, job.target, rng, options); },
+      job.output, write_output);
   const double spacing = relax_spacing(packing.size(), domain.unit);
   relax(packing, spacing, job.relax_sweeps, rng);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -73,17 +75,35 @@ std::string relaxed_text(int sweeps) {
   return sweeps > 0 ? ", relaxed " + std::to_string(sweeps) + (sweeps == 1 ? " sweep" : " sweeps") : "";
 }
 
-TuneResult tune_with_progress(std::size_t start, std::size_t target, Method method,
-                              const std::function<TuneResult(const TuneOptions&)>& run, const std::string& output,
+TuneResult tune_with_progress(std::size_t target, Method method,
+                              const std::function<TuneResult(const TuneOptions&)>& run,
+                              const std::string& output,
                               const std::function<void()>& write_output) {
   ProgressBar bar("tune");
   TuneOptions options;
   options.method = method;
+  // The bar follows the running phase's time, as PhaseTimeLeft estimates it, not the
+  // count: the last disks of a phase take the longest.
+  PhaseTimeLeft time_left;
   options.on_progress = [&](const Progress& p) {
-    char status[96];
-    std::snprintf(status, sizeof status, "%zu/%zu disks, eta %.4f, %s", p.count, target,
-                  p.area_fraction, to_string(p.phase).c_str());
-    bar.update(static_cast<double>(p.count) - start, static_cast<double>(target) - start, status);
+    time_left.add(bar.seconds(), p);
+    const double left = time_left.seconds_left(), f = time_left.phase_fraction();
+    char when[64];
+    if (std::isnan(left)) {
+      std::snprintf(when, sizeof when, "time left not known yet");
+    } else if (std::isinf(left)) {
+      std::snprintf(when, sizeof when, "slowing to a stop");
+    } else {
+      std::snprintf(when, sizeof when, "%.0f %%, about %.*f s left", 100 * f,
+                    left < 1    ? 2
+                    : left < 10 ? 1
+                                : 0,
+                    left);
+    }
+    char status[160];
+    std::snprintf(status, sizeof status, "%s: %s; %zu/%zu disks, eta %.4f",
+                  to_string(p.phase).c_str(), when, p.count, target, p.area_fraction);
+    bar.update(f, status);
     return true;
   };
   try {

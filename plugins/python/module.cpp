@@ -194,9 +194,9 @@ auto without_gil(const py::object& progress, TuneOptions& options, Work&& work)
     try {
       if (PyErr_CheckSignals() != 0) throw py::error_already_set();
       if (progress.is_none()) return true;
-      const py::object answer =
-          progress(py::dict(py::arg("count") = p.count, py::arg("area_fraction") = p.area_fraction,
-                            py::arg("phase") = to_string(p.phase)));
+      const py::object answer = progress(
+          py::dict(py::arg("count") = p.count, py::arg("area_fraction") = p.area_fraction,
+                   py::arg("phase") = to_string(p.phase), py::arg("phase_goal") = p.phase_goal));
       return answer.is_none() || answer.cast<bool>();
     } catch (py::error_already_set& e) {
       raised.emplace(std::move(e));

@@ -142,16 +142,17 @@ Drawing histogram_plot(const Histogram& h, PlotText text) {
   return std::move(plot.drawing());
 }
 
-// Disks in a w x h cell, 800 pixels across: a pixel takes disk i's color when its
-// center lies in that disk (or, in a periodic cell, one of its periodic images), found
-// from the disks whose box covers the pixel's row.
-Drawing disks_image(double w, double h, const std::vector<Vec2>& centers,
-                    const std::vector<double>& radii, const std::vector<Rgb>& colors,
-                    bool periodic = true) {
-  constexpr int kCellWidth = 800;
+constexpr int kCellWidth = 800;
+
+// Disks in a w x h cell, kCellWidth pixels across, rows from the top: a pixel takes disk
+// i's color when its center lies in that disk (or, in a periodic cell, one of its
+// periodic images), found from the disks whose box covers the pixel's row. One image:
+// PDF and SVG embed it, so no seams and small files.
+std::vector<Rgb> disk_pixels(double w, double h, const std::vector<Vec2>& centers,
+                             const std::vector<double>& radii, const std::vector<Rgb>& colors,
+                             bool periodic) {
   const double scale = kCellWidth / w;
   const int height = std::max(1, static_cast<int>(std::lround(h * scale)));
-  // Pixel rows of each disk into one image (PDF and SVG embed it: no seams, small files).
   std::vector<Rgb> pixels(static_cast<std::size_t>(kCellWidth) * height, Rgb{255, 255, 255});
   for (std::size_t i = 0; i < centers.size(); ++i) {
     const Vec2 c = centers[i];
@@ -175,6 +176,14 @@ Drawing disks_image(double w, double h, const std::vector<Vec2>& centers,
       }
     }
   }
+  return pixels;
+}
+
+Drawing disks_image(double w, double h, const std::vector<Vec2>& centers,
+                    const std::vector<double>& radii, const std::vector<Rgb>& colors,
+                    bool periodic = true) {
+  const std::vector<Rgb> pixels = disk_pixels(w, h, centers, radii, colors, periodic);
+  const int height = static_cast<int>(pixels.size() / kCellWidth);
   Drawing r(kCellWidth, height, {255, 255, 255});
   r.image(0, 0, kCellWidth, height, 1, 1, pixels);
   return r;
@@ -227,7 +236,28 @@ Drawing orientation_image(const Packing& packing, const BondOrder& order) {
     colors.push_back(order.local[i] > kHexagonalPsi6 ? orientation_color(order.orientation[i])
                                                      : Rgb{205, 205, 205});
   }
-  return disks_image(frame.extent.x, frame.extent.y, centers, radii, colors, frame.periodic);
+  // The disks between a title and a legend: the hues over the 60 degrees of a lattice's
+  // orientation, and the gray of the disks that are not locally hexagonal.
+  const std::vector<Rgb> pixels =
+      disk_pixels(frame.extent.x, frame.extent.y, centers, radii, colors, frame.periodic);
+  constexpr int kTop = 36, kBottom = 56;
+  const int height = static_cast<int>(pixels.size() / kCellWidth);
+  Drawing r(kCellWidth, kTop + height + kBottom, kWhiteBg);
+  r.text(kCellWidth / 2.0, 24, "Disks by lattice orientation, where locally hexagonal", 15, kBlack,
+         Drawing::Align::center);
+  r.image(0, kTop, kCellWidth, height, 1, 1, pixels);
+  std::vector<Rgb> hues(240);
+  for (std::size_t k = 0; k < hues.size(); ++k) hues[k] = orientation_color(60.0 * k / hues.size());
+  const int bar_x = 140, bar_y = kTop + height + 14;
+  r.image(bar_x, bar_y, static_cast<int>(hues.size()), 1, 1, 11, hues);
+  r.text(bar_x - 6, bar_y + 10, "0 deg", 12, kBlack, Drawing::Align::right);
+  r.text(bar_x + hues.size() + 6, bar_y + 10, "60 deg", 12, kBlack);
+  r.text(bar_x + hues.size() / 2.0, bar_y + 30, "lattice orientation (|psi6| > 0.9)", 12, kBlack,
+         Drawing::Align::center);
+  const int gray_x = 560;
+  r.fill_rect(gray_x, bar_y, gray_x + 11, bar_y + 10, {205, 205, 205});
+  r.text(gray_x + 18, bar_y + 10, "not locally hexagonal", 12, kBlack);
+  return r;
 }
 
 Drawing curves_plot(const FiberStatistics& stats, const FiberStatistics* sample, double reference,

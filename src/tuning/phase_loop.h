@@ -5,17 +5,18 @@
 // stopping the moment the count is the target.
 #pragma once
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <functional>
 #include <string>
 #include <vector>
 
+#include "../voids/final_check.h"
 #include "disktune/boundary.h"
 #include "disktune/errors.h"
 #include "disktune/surface_tuning.h"
 #include "disktune/tuning.h"
-#include "../voids/final_check.h"
 
 namespace disktune::detail {
 
@@ -160,8 +161,10 @@ TuneResult run_phases(P& packing, const P& entry, double unit, std::size_t goal,
     return eject ? (n > result.target ? n - result.target : 0) : (result.target > n ? result.target - n : 0);
   };
   auto eta = [&] { return static_cast<double>(packing.size()) / unit; };
+  // Where the phase hands over at the latest: its area fraction's count, or the target.
+  std::size_t phase_goal = goal;
   auto report = [&](Phase phase) {
-    if (options.on_progress && !options.on_progress({packing.size(), eta(), phase})) {
+    if (options.on_progress && !options.on_progress({packing.size(), eta(), phase, phase_goal})) {
       throw Cancelled("tune: cancelled by the progress callback; the packing is as tune got it");
     }
   };
@@ -199,6 +202,9 @@ TuneResult run_phases(P& packing, const P& entry, double unit, std::size_t goal,
     if (result.last_phase != Phase::none) before_phase = packing;
     check_seconds += since(copy_start);
     result.last_phase = plan.phase;
+    phase_goal = eject || plan.until >= 1
+                     ? goal
+                     : std::min(goal, static_cast<std::size_t>(std::ceil(plan.until * unit)));
     if (plan.thaw) {
       for (const DiskId id : packing.ids()) packing.set_flags(id, packing.flags(id) & ~kFrozen);
     }

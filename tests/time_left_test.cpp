@@ -1,0 +1,104 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// PhaseTimeLeft against reports made from a known pace (constant, or falling
+// exponentially with the disks done), whose time to the goal is worked out here in closed
+// form; and the phase goal tune reports, against the area fraction's count worked out
+// from the radius and the box.
+#include "disktune/time_left.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "disktune/sampling.h"
+
+namespace disktune {
+namespace {
+
+Progress report(double done, std::size_t start, std::size_t goal,
+                Phase phase = Phase::void_injection) {
+  const bool down = goal < start;
+  const auto count = static_cast<std::size_t>(std::llround(down ? start - done : start + done));
+  return {count, 0.0, phase, goal};
+}
+
+TEST(PhaseTimeLeft, AtAConstantPaceTheTimeLeftIsWhatIsLeftOverThePace) {
+  PhaseTimeLeft clock;
+  // 100 disks a second from 5000 toward 6000, reported every 0.05 s for 2 s.
+  for (int k = 0; k <= 40; ++k) clock.add(3 + 0.05 * k, report(5.0 * k, 5000, 6000));
+  EXPECT_NEAR(clock.seconds_left(), 8.0, 0.08);
+  EXPECT_NEAR(clock.phase_seconds(), 2.0, 1e-12);
+  EXPECT_NEAR(clock.phase_fraction(), 0.2, 0.01);
+}
+
+TEST(PhaseTimeLeft, APaceThatFallsWithTheDisksDoneIsFollowed) {
+  // pace(x) = r0 e^(-k x): x(t) = ln(1 + k r0 t) / k, the goal G at (e^(k G) - 1) / (k r0).
+  const double r0 = 1000, k = 0.002, G = 1500;
+  const double t_goal = std::expm1(k * G) / (k * r0);  // 9.54 s
+  for (const bool down : {false, true}) {
+    PhaseTimeLeft clock;
+    const std::size_t start = down ? 9000 : 2000, goal = down ? 7500 : 3500;
+    for (double t = 0; t <= 4 + 1e-9; t += 0.01)
+      clock.add(t, report(std::log1p(k * r0 * t) / k, start, goal));
+    const double left = t_goal - 4;
+    EXPECT_NEAR(clock.seconds_left(), left, 0.05 * left) << (down ? "down" : "up");
+    EXPECT_NEAR(clock.phase_fraction(), 4 / t_goal, 0.03);
+    // A constant pace (the last second's) would say much less.
+    const double recent = (std::log1p(k * r0 * 4) - std::log1p(k * r0 * 3)) / k;
+    EXPECT_GT(clock.seconds_left(), 1.5 * (G - std::log1p(k * r0 * 4) / k) / recent);
+  }
+}
+
+TEST(PhaseTimeLeft, ANewPhaseStartsANewFit) {
+  PhaseTimeLeft clock;
+  for (int k = 0; k <= 40; ++k) clock.add(0.05 * k, report(5.0 * k, 5000, 6000));
+  clock.add(2.05, report(0, 5200, 5600, Phase::repeller_injection));
+  EXPECT_EQ(clock.phase(), Phase::repeller_injection);
+  EXPECT_TRUE(std::isnan(clock.seconds_left()));  // one report: too few to tell
+  EXPECT_TRUE(std::isnan(clock.phase_fraction()));
+  EXPECT_EQ(clock.phase_seconds(), 0);
+  for (int k = 1; k <= 20; ++k)
+    clock.add(2.05 + 0.1 * k, report(2.0 * k, 5200, 5600, Phase::repeller_injection));
+  EXPECT_NEAR(clock.seconds_left(), 360 / 20.0, 0.2);  // 20 disks a second, 360 left
+}
+
+TEST(PhaseTimeLeft, AStalledCountNeverGetsThereAndAReachedGoalHasNothingLeft) {
+  PhaseTimeLeft stalled;
+  for (int k = 0; k <= 40; ++k) stalled.add(0.05 * k, report(k < 10 ? k : 10, 5000, 6000));
+  EXPECT_TRUE(std::isinf(stalled.seconds_left()));
+  EXPECT_EQ(stalled.phase_fraction(), 0);
+  PhaseTimeLeft reached;
+  for (int k = 0; k <= 10; ++k) reached.add(0.1 * k, report(10.0 * k, 5000, 5100));
+  EXPECT_EQ(reached.seconds_left(), 0);
+  EXPECT_EQ(reached.phase_fraction(), 1);
+}
+
+TEST(PhaseTimeLeft, TuneReportsWhereEachPhaseHandsOver) {
+  const PeriodicBox box(1, 1);
+  const double r = 0.02;
+  Rng rng(7);
+  Packing p = sample_mps(box, r, rng);
+  // The count at area fraction 1: the box's area over a disk of radius r/2.
+  const double unit = 1.0 / (M_PI * r * r / 4);
+  const auto count_at = [&](double eta) { return static_cast<std::size_t>(std::ceil(eta * unit)); };
+  const std::size_t target = count_at(0.78);
+  std::vector<Progress> seen;
+  TuneOptions options;
+  options.on_progress = [&](const Progress& progress) { return seen.push_back(progress), true; };
+  ASSERT_TRUE(tune(p, box, Target::count(target), rng, options).reached);
+  std::size_t void_reports = 0, repeller_reports = 0;
+  for (const Progress& s : seen) {
+    if (s.phase == Phase::void_injection) {
+      ++void_reports;
+      EXPECT_EQ(s.phase_goal, count_at(0.75));
+    } else if (s.phase == Phase::repeller_injection) {
+      ++repeller_reports;
+      EXPECT_EQ(s.phase_goal, target);  // before its own 0.79
+    }
+  }
+  EXPECT_GT(void_reports, 0u);
+  EXPECT_GT(repeller_reports, 0u);
+}
+
+}  // namespace
+}  // namespace disktune
