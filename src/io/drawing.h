@@ -1,12 +1,15 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// A picture for the report's files (internal), drawn with cairo onto a recording surface
-// and written as PNG, PDF or SVG: pixel-exact filled rectangles in the PNG (the cell and
-// spectrum pictures are judged pixel by pixel), antialiased lines and text in the
-// system's sans-serif font (axis titles, legends), vectors and real text in PDF and SVG.
+// A picture for the report's files (internal): its drawing steps are kept and played
+// with cairo onto the file's own surface, a PNG image, a PDF page or an SVG: pixel-exact
+// filled rectangles in the PNG (the cell and spectrum pictures are judged pixel by
+// pixel), antialiased lines and text in the system's sans-serif font (axis titles,
+// legends), vectors and real text in PDF and SVG. (Not a cairo recording surface:
+// replayed into PDF or SVG, cairo 1.16 keeps some of its surfaces alive for good.)
 #pragma once
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -40,7 +43,7 @@ class Drawing {
   /// cell_w x cell_h units, its top left corner at (x, y): exact pixels in the PNG at
   /// whole positions and sizes, one embedded image (no seams) in PDF and SVG.
   void image(double x, double y, int cols, int rows, double cell_w, double cell_h,
-             const std::vector<Rgb>& pixels);
+             std::vector<Rgb> pixels);
   /// An antialiased line (pixel centers at .5), `width` pixels wide, dashed if asked.
   void line(double x0, double y0, double x1, double y1, Rgb c, double width = 1,
             bool dashed = false);
@@ -62,12 +65,14 @@ class Drawing {
             Align align = Align::left, bool upward = false);
   double text_width(const std::string& text, double size) const;
 
-  cairo_surface_t* surface() const { return surface_; }
+  /// Plays every step onto `cr` (a context whose surface is width() x height()).
+  void play(cairo_t* cr) const;
 
  private:
   int w_, h_;
-  cairo_surface_t* surface_ = nullptr;
-  cairo_t* cr_ = nullptr;
+  std::vector<std::function<void(cairo_t*)>> steps_;
+  cairo_surface_t* measure_surface_ = nullptr;  // for text_width: a 1 x 1 image
+  cairo_t* measure_ = nullptr;
 };
 
 /// Writes the picture as an RGB PNG (one pixel a unit), a PDF or an SVG (one point a

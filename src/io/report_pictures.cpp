@@ -55,7 +55,7 @@ Drawing spectrum_image(const Spectrum& s) {
       gray[static_cast<std::size_t>(row) * side + col] = {g, g, g};
     }
   }
-  r.image(at.left, at.top, side, side, at.zoom, at.zoom, gray);
+  r.image(at.left, at.top, side, side, at.zoom, at.zoom, std::move(gray));
   // Ticks at round normalised frequencies: (kx, ky) = (k W, k H) / unit for frequency k.
   const double center_x = at.left + (K - 1 + 0.5) * at.zoom, center_y = at.top + (K - 1 + 0.5) * at.zoom;
   const double reach = (K - 1) * s.frequency_unit / std::max(s.width, s.height);
@@ -81,7 +81,7 @@ Drawing spectrum_image(const Spectrum& s) {
     const auto g = static_cast<std::uint8_t>(std::lround(255.0 * (extent - 1 - y) / std::max(1, extent - 1)));
     ramp[y] = {g, g, g};
   }
-  r.image(bar, at.top, 1, extent, 19, 1, ramp);
+  r.image(bar, at.top, 1, extent, 19, 1, std::move(ramp));
   r.polyline({{bar - 0.5, at.top - 0.5}, {bar + 18.5, at.top - 0.5}, {bar + 18.5, at.top + extent + 0.5},
               {bar - 0.5, at.top + extent + 0.5}, {bar - 0.5, at.top - 0.5}},
              kBlack, 1);
@@ -182,10 +182,10 @@ std::vector<Rgb> disk_pixels(double w, double h, const std::vector<Vec2>& center
 Drawing disks_image(double w, double h, const std::vector<Vec2>& centers,
                     const std::vector<double>& radii, const std::vector<Rgb>& colors,
                     bool periodic = true) {
-  const std::vector<Rgb> pixels = disk_pixels(w, h, centers, radii, colors, periodic);
+  std::vector<Rgb> pixels = disk_pixels(w, h, centers, radii, colors, periodic);
   const int height = static_cast<int>(pixels.size() / kCellWidth);
   Drawing r(kCellWidth, height, {255, 255, 255});
-  r.image(0, 0, kCellWidth, height, 1, 1, pixels);
+  r.image(0, 0, kCellWidth, height, 1, 1, std::move(pixels));
   return r;
 }
 
@@ -238,21 +238,22 @@ Drawing orientation_image(const Packing& packing, const BondOrder& order) {
   }
   // The disks between a title and a legend: the hues over the 60 degrees of a lattice's
   // orientation, and the gray of the disks that are not locally hexagonal.
-  const std::vector<Rgb> pixels =
+  std::vector<Rgb> pixels =
       disk_pixels(frame.extent.x, frame.extent.y, centers, radii, colors, frame.periodic);
   constexpr int kTop = 36, kBottom = 56;
   const int height = static_cast<int>(pixels.size() / kCellWidth);
   Drawing r(kCellWidth, kTop + height + kBottom, kWhiteBg);
   r.text(kCellWidth / 2.0, 24, "Disks by lattice orientation, where locally hexagonal", 15, kBlack,
          Drawing::Align::center);
-  r.image(0, kTop, kCellWidth, height, 1, 1, pixels);
-  std::vector<Rgb> hues(240);
-  for (std::size_t k = 0; k < hues.size(); ++k) hues[k] = orientation_color(60.0 * k / hues.size());
+  r.image(0, kTop, kCellWidth, height, 1, 1, std::move(pixels));
+  constexpr int kHues = 240;
+  std::vector<Rgb> hues(kHues);
+  for (int k = 0; k < kHues; ++k) hues[k] = orientation_color(60.0 * k / kHues);
   const int bar_x = 140, bar_y = kTop + height + 14;
-  r.image(bar_x, bar_y, static_cast<int>(hues.size()), 1, 1, 11, hues);
+  r.image(bar_x, bar_y, kHues, 1, 1, 11, std::move(hues));
   r.text(bar_x - 6, bar_y + 10, "0 deg", 12, kBlack, Drawing::Align::right);
-  r.text(bar_x + hues.size() + 6, bar_y + 10, "60 deg", 12, kBlack);
-  r.text(bar_x + hues.size() / 2.0, bar_y + 30, "lattice orientation (|psi6| > 0.9)", 12, kBlack,
+  r.text(bar_x + kHues + 6, bar_y + 10, "60 deg", 12, kBlack);
+  r.text(bar_x + kHues / 2.0, bar_y + 30, "lattice orientation (|psi6| > 0.9)", 12, kBlack,
          Drawing::Align::center);
   const int gray_x = 560;
   r.fill_rect(gray_x, bar_y, gray_x + 11, bar_y + 10, {205, 205, 205});
@@ -386,7 +387,7 @@ Drawing surface_image(const SurfaceMesh& mesh) {
   const int bar_y = height - 38, bar_x = kWidth / 2 - 150;
   std::vector<Rgb> bar(300);
   for (int k = 0; k < 300; ++k) bar[k] = red_to_green(k / 299.0, 1);
-  r.image(bar_x, bar_y, 300, 1, 1, 11, bar);
+  r.image(bar_x, bar_y, 300, 1, 1, 11, std::move(bar));
   r.text(bar_x - 8, bar_y + 10, "30 deg or less", 12, kBlack, Drawing::Align::right);
   r.text(bar_x + 308, bar_y + 10, "60 deg", 12, kBlack);
   r.text(kWidth / 2.0, bar_y + 28, "smallest angle of the triangle", 12, kBlack,
