@@ -100,7 +100,8 @@ struct TuneOptions {
   /// A sweep over all disks that adds fewer than this fraction of the count is no
   /// progress; the phase then ends.
   double min_gain_per_sweep = 2e-4;
-  /// Upper bound on sweeps in one phase, so a run always ends.
+  /// Upper bound on sweeps in one phase, so a run always ends (the repeller phases'
+  /// sweeps over the sparsest tenth of the disks count a tenth each).
   int max_sweeps_per_phase = 200;
   /// Called now and then (after each sweep, and each 1/64 of a sweep). Returning false
   /// cancels: tune then puts the packing back as it got it and throws Cancelled.
