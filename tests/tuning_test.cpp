@@ -1,18 +1,25 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Injection operations and the scheduler, checked by the independent oracle after
 // every single operation.
+#include "disktune/tuning.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <memory>
+#include <string>
 #include <tuple>
+#include <vector>
 
+#include "../src/tuning/phase_loop.h"
 #include "../src/tuning/undo_log.h"
 #include "../src/tuning/void_repair.h"
 #include "disktune/density.h"
 #include "disktune/errors.h"
 #include "disktune/mesh.h"
+#include "disktune/planar_domain.h"
 #include "disktune/sampling.h"
-#include "disktune/tuning.h"
 #include "test_util.h"
 
 namespace disktune {
@@ -433,6 +440,50 @@ TEST(MethodNames, EveryNameAndNoOther) {
       EXPECT_NE(std::string(e.what()).find("give auto, void, repeller"), std::string::npos) << e.what();
     }
   }
+}
+
+}  // namespace
+}  // namespace disktune
+
+namespace disktune {
+namespace {
+
+// The repeller phases' candidates: the tenth of the free disks with the fewest
+// neighbours within twice their radius, ties in the order given; counted here over all
+// pairs (nearest periodic images), and in a planar domain no boundary disk among them.
+TEST(SparsestFirst, PicksTheTenthWithTheFewestNeighboursByAllPairs) {
+  for (const std::uint64_t seed : {1, 2, 3}) {
+    const PeriodicBox box(1, 1);
+    Rng rng(seed);
+    Packing p = sample_mps(box, 0.03, rng);
+    tune(p, box, Target::area_fraction(0.7), rng);
+    std::vector<DiskId> order = p.ids();
+    std::reverse(order.begin(), order.end());                   // any order: ties keep it
+    std::vector<std::pair<std::size_t, std::size_t>> expected;  // neighbours, place in order
+    for (std::size_t i = 0; i < order.size(); ++i) {
+      std::size_t near = 0;
+      for (const DiskId q : order) {
+        if (q == order[i]) continue;
+        Vec2 d = p.center(q) - p.center(order[i]);
+        d.x -= std::round(d.x), d.y -= std::round(d.y);
+        near += d.x * d.x + d.y * d.y <= 4 * 0.03 * 0.03;
+      }
+      expected.push_back({near, i});
+    }
+    std::sort(expected.begin(), expected.end());
+    const std::vector<DiskId> got = detail::sparsest_first(p, order);
+    ASSERT_EQ(got.size(), order.size() / 10);
+    for (std::size_t k = 0; k < got.size(); ++k)
+      EXPECT_EQ(got[k], order[expected[k].second]) << "seed " << seed << " k " << k;
+  }
+  const auto domain = std::make_shared<const PlanarDomain>(
+      read_poly(std::string(DISKTUNE_DATA_DIR) + "/domains/gear.poly"));
+  Rng rng(4);
+  const Packing g = sample_mps(domain, 0.03, rng);
+  std::size_t fixed = 0;
+  for (const DiskId d : g.ids()) fixed += (g.flags(d) & kFixed) != 0;
+  ASSERT_GT(fixed, g.size() / 10);  // enough boundary disks to fill the tenth, were they counted
+  for (const DiskId d : detail::sparsest_first(g, g.ids())) EXPECT_FALSE(g.flags(d) & kFixed);
 }
 
 }  // namespace
