@@ -81,7 +81,7 @@ expect memory-size-negative 2 "--max-memory must be a positive size" -- "$bin" s
 expect memory-size-unit 2 "--max-memory must be a positive size.*not '8X'" -- "$bin" sample --radius 0.05 --max-memory 8X
 expect memory-size-text 2 "--max-memory must be a positive size" -- "$bin" tune --radius 0.05 --target-count 100 --max-memory lots
 expect memory-size-ok 0 "^sample: [0-9]+ disks" -- "$bin" sample --radius 0.05 --max-memory 1.5GiB --output z.csv
-expect memory-size-bytes 0 "^tune: [0-9]+ -> 300 disks" -- "$bin" tune --radius 0.05 --target-count 300 --max-memory 500000000
+expect memory-size-bytes 0 "^tune: [0-9]+ -> 300 disks" -- "$bin" tune --radius 0.05 --target-count 300 --max-memory 500000000 -o /dev/null
 rm -f z.csv
 expect bad-box 2 "width and height must be" -- "$bin" sample --width -1 --radius 0.1
 expect no-radius 2 "radius" -- "$bin" sample --output z.csv
@@ -93,16 +93,19 @@ expect suggest-command 2 "^disktune: unknown command sampel \(did you mean sampl
 expect no-suggestion 2 "^disktune: tune: unknown option --frobnicate$" -- "$bin" tune --radius 0.1 --frobnicate
 expect stray-argument 2 "^disktune: sample: unexpected argument stray$" -- "$bin" sample --radius 0.1 stray
 # --quiet (before or after the command): no summary, note or progress; warnings and errors still
-[ -z "$("$bin" sample --radius 0.05 -o quiet.csv --quiet 2>&1)" ] && [ -z "$("$bin" -q tune -i quiet.csv --target-count 300 2>&1)" ] &&
-  [ "$("$bin" tune --radius 0.05 --target-count 100 -q 2>&1 | wc -l)" -eq 1 ] &&
+[ -z "$("$bin" sample --radius 0.05 -o quiet.csv --quiet 2>&1)" ] && [ -z "$("$bin" -q tune -i quiet.csv --target-count 300 -o /dev/null 2>&1)" ] &&
+  [ "$("$bin" tune --radius 0.05 --target-count 100 -q -o /dev/null 2>&1 | wc -l)" -eq 1 ] &&
   pass=$((pass + 1)) || { echo "FAIL --quiet"; fails=$((fails + 1)); }
 expect quiet-error 3 "^disktune: error: cannot read .missing.csv." -- "$bin" report missing.csv --radius 0.05 -q
-# Without --output nothing is written, and the command says so
-expect no-output-note 0 "note: no --output given: the [0-9]+ disks were not written" -- "$bin" sample --radius 0.1
-expect no-output-note-tune 0 "note: no --output given: the 320 disks were not written" -- "$bin" tune --radius 0.05 --target-count 320
+# Without --output (or --svg) nothing would be written: refused before any work, saying how
+expect no-output 2 "^disktune: error: sample: nothing would be written: give --output FILE.csv \(or -o - for standard output, -o /dev/null for the summary line alone\)$" -- "$bin" sample --radius 0.1
+expect no-output-tune 2 "tune: nothing would be written: give --output" -- timeout 5 "$bin" tune --radius 0.001 --target-fraction 0.85
+expect no-output-surface 2 "sample: nothing would be written" -- "$bin" sample --domain "$data/surfaces/eight.off" --radius 0.05
+expect svg-only 0 "^sample: [0-9]+ disks" -- "$bin" sample --radius 0.1 --svg only.svg
+expect summary-only 0 "^sample: [0-9]+ disks.* -> /dev/null$" -- "$bin" sample --radius 0.1 -o /dev/null
 # Progress goes to a log too (plain lines, here at every update instead of every 10 s: a fixed
 # interval would make the check depend on the machine's speed), with the time so far
-DISKTUNE_PROGRESS_SECONDS=0 "$bin" tune --radius 0.01 --target-fraction 0.7 2>progress.log >/dev/null &&
+DISKTUNE_PROGRESS_SECONDS=0 "$bin" tune --radius 0.01 --target-fraction 0.7 -o /dev/null 2>progress.log >/dev/null &&
   grep -qE "^tune: [a-z ]+: [0-9]+ %, about [0-9.]+ s left; [0-9]+/[0-9]+ disks, eta 0\.[0-9]+, [0-9.]+ s so far$" progress.log &&
   ! grep -q $'\r' progress.log && pass=$((pass + 1)) || { echo "FAIL progress lines in a log"; cat progress.log; fails=$((fails + 1)); }
 expect bad-domain 2 "domain" -- "$bin" sample --domain sphere --radius 0.1
@@ -119,8 +122,8 @@ absent unwritable-output ro/z.csv
 expect tune 0 "^tune: [0-9]+ -> 900 disks \(target 900, reached\)" -- "$bin" tune --radius 0.03 --target-count 900 --seed 2 --output t.csv --svg t.svg
 [ "$(($(wc -l <t.csv) - 1))" -eq 900 ] && pass=$((pass + 1)) || { echo "FAIL tune row count"; fails=$((fails + 1)); }
 "$bin" sample --radius 0.03 --seed 4 --output m.csv >/dev/null
-expect tune-input 0 "-> [0-9]+ disks .*reached.*eta = 0\.6[0-9]+" -- "$bin" tune --radius 0.03 --input m.csv --target-fraction 0.65 --method void
-expect tune-crystal 0 "eta = 0\.85[0-9]*, " -- "$bin" tune --radius 0.03 --target-fraction 0.85 --method crystal
+expect tune-input 0 "-> [0-9]+ disks .*reached.*eta = 0\.6[0-9]+" -- "$bin" tune --radius 0.03 --input m.csv --target-fraction 0.65 --method void -o /dev/null
+expect tune-crystal 0 "eta = 0\.85[0-9]*, " -- "$bin" tune --radius 0.03 --target-fraction 0.85 --method crystal -o /dev/null
 expect tune-not-reached 4 "NOT reached" -- "$bin" tune --radius 0.03 --target-fraction 0.9 --method void --output nr.csv
 [ -s nr.csv ] && pass=$((pass + 1)) || { echo "FAIL not-reached writes the closest packing"; fails=$((fails + 1)); }
 # --relax: the count kept, the packing still conflict-free and maximal (report's own check).
@@ -140,14 +143,14 @@ expect tune-zero-count 2 "--target-count 0 is out of range" -- "$bin" tune --rad
 expect seed-negative 2 "--seed must be a whole number from 0 to 18446744073709551615" -- "$bin" sample --radius 0.05 --seed -1
 expect seed-too-big 2 "--seed 18446744073709551616 is out of range" -- "$bin" sample --radius 0.05 --seed 18446744073709551616
 expect seed-float 2 "--seed must be a whole number" -- "$bin" sample --radius 0.05 --seed 1e23
-expect seed-largest 0 "^sample: " -- "$bin" sample --radius 0.05 --seed 18446744073709551615
+expect seed-largest 0 "^sample: " -- "$bin" sample --radius 0.05 --seed 18446744073709551615 -o /dev/null
 expect spectrum-window-too-big 2 "--spectrum-window 20000 is out of range: give 0 to 4096" -- "$bin" report a.csv --radius 0.05 --spectrum-window 20000
-expect tune-eject 0 "-> [0-9]+ disks .*reached.*eta = 0\.40[0-9]*, " -- "$bin" tune --radius 0.03 --target-fraction 0.40
-expect tune-sift 0 "reached" -- "$bin" tune --radius 0.03 --target-fraction 0.50 --method sift
-expect tune-eject-wrong-method 2 "use an ejection method" -- "$bin" tune --radius 0.03 --target-fraction 0.40 --method void
-expect tune-eject-too-far 4 "NOT reached" -- "$bin" tune --radius 0.03 --target-fraction 0.30 --method attractor
+expect tune-eject 0 "-> [0-9]+ disks .*reached.*eta = 0\.40[0-9]*, " -- "$bin" tune --radius 0.03 --target-fraction 0.40 -o /dev/null
+expect tune-sift 0 "reached" -- "$bin" tune --radius 0.03 --target-fraction 0.50 --method sift -o /dev/null
+expect tune-eject-wrong-method 2 "use an ejection method" -- "$bin" tune --radius 0.03 --target-fraction 0.40 --method void -o /dev/null
+expect tune-eject-too-far 4 "NOT reached" -- "$bin" tune --radius 0.03 --target-fraction 0.30 --method attractor -o /dev/null
 expect tune-bad-method 2 "method" -- "$bin" tune --radius 0.03 --target-count 900 --method fancy
-expect tune-angle 0 "reached" -- "$bin" tune --radius 0.03 --target-fraction 0.7 --method angle
+expect tune-angle 0 "reached" -- "$bin" tune --radius 0.03 --target-fraction 0.7 --method angle -o /dev/null
 expect tune-wrong-radius 2 "m.csv:2: radius 0.03 differs.*made with, 0.03 \(--radius 0.03\)" -- "$bin" tune --radius 0.02 --input m.csv --target-count 2000
 printf 'x,y,r\n0.5,0.5,0.03\n0.51,0.5,0.03\n' >conflict.csv
 expect tune-conflict 2 "closer than r" -- "$bin" tune --radius 0.03 --input conflict.csv --target-count 900
@@ -346,7 +349,7 @@ expect planar-triangle-stdout 2 "two files, NAME.node and NAME.ele" -- "$bin" me
 expect surface-triangle 2 "hold planar meshes, and this one is a surface" -- "$bin" remesh "$data/surfaces/eight.off" -n 500 -o never.node
 absent surface-triangle-nothing never.node
 grep -q '"interior_triangles"' p8.json && grep -q '"boundary_triangles"' p8.json && pass=$((pass + 1)) || { echo "FAIL planar report keys"; fails=$((fails + 1)); }
-expect planar-angle 2 "angle injection" -- "$bin" tune --domain hole.poly --radius 0.05 --input p.csv --target-fraction 0.8 --method angle
+expect planar-angle 2 "angle injection" -- "$bin" tune --domain hole.poly --radius 0.05 --input p.csv --target-fraction 0.8 --method angle -o /dev/null
 mkdir planar-pics
 expect planar-report-png 0 "^order: psi6 " -- "$bin" report p8.csv --domain hole.poly --radius 0.05 --png-dir planar-pics
 [ "$(ls planar-pics | tr '\n' ' ')" = "angles.png edges.png orientation.png " ] && head -c 8 planar-pics/orientation.png | grep -q PNG &&
@@ -407,7 +410,7 @@ expect sizing-warning 0 "warning: the sizing's gradation L = 0.4" -- "$bin" samp
 rm -f z.csv
 expect memory-boundary 2 "the radii of the sizing .*boundary grading.* are too small for this domain of area 0\.84: the job needs about [0-9.e]+ disks \(~[0-9.]+ [TPE]iB\) but .* available; darts are thrown on cells as small as the smallest radius, 1e-6, over the whole domain \([0-9.e]+ cells, ~[0-9.]+ [TPE]iB\): raise it to at least [0-9.e-]+," -- timeout 20 "$bin" sample --domain hole.poly --sizing boundary:1e-6,0.05,0.1 --output z.csv --max-memory 20G
 absent memory-boundary-output z.csv
-expect sizing-crystal 2 "crystal growth needs one radius" -- "$bin" tune --domain hole.poly --sizing "0.03 + 0.03*x" --input v.csv --target-fraction 0.8 --method crystal
+expect sizing-crystal 2 "crystal growth needs one radius" -- "$bin" tune --domain hole.poly --sizing "0.03 + 0.03*x" --input v.csv --target-fraction 0.8 --method crystal -o /dev/null
 
 # curved surfaces: samples x,y,z,r, the restricted Delaunay mesh, the report, refusals.
 # eight.off's bounding box diagonal is 1.13: r = 0.045 is 0.04 of it (a few hundred disks).
@@ -435,7 +438,7 @@ expect surface-report 0 "^report: 420 disks, eta = 0\.6[0-9]+, rho = [0-9.]+, ma
 grep -q '"maximal": true' e4.json && grep -q '"hausdorff"' e4.json && grep -q '"local_beta"' e4.json && pass=$((pass + 1)) || { echo "FAIL surface report JSON"; fails=$((fails + 1)); }
 expect surface-file-one-radius 2 "e4.csv:2: radius 0.045 differs .* the sizing curvature.*every disk in the file has that radius: give the radius the samples were made with, 0.045 \(--radius 0.045\)" -- "$bin" report e4.csv --domain "$eight" --sizing curvature
 expect surface-mesh-ply 0 "-> e4.ply" -- "$bin" mesh e4.csv --domain "$eight" --radius 0.045 --output e4.ply
-expect surface-from-ply 0 "surface e4\.ply \(420 vertices, [0-9]+ triangles, genus 2, closed" -- "$bin" sample --domain e4.ply --radius 0.05
+expect surface-from-ply 0 "surface e4\.ply \(420 vertices, [0-9]+ triangles, genus 2, closed" -- "$bin" sample --domain e4.ply --radius 0.05 -o /dev/null
 expect surface-curvature 0 "^sample: [0-9]+ disks, .*sizing curvature .*genus 0, closed" -- "$bin" sample --domain "$data/surfaces/sphere.off" --sizing curvature --output sc.csv
 expect surface-curvature-report 0 "maximal, conflict-free" -- "$bin" report sc.csv --domain "$data/surfaces/sphere.off" --sizing curvature
 # A radius nearly the sphere's size: a valid packing of 2 disks, written with a warning,
@@ -446,7 +449,7 @@ expect surface-too-few-json 0 '"mesh_check": null,' -- grep -A1 '"mesh_check"' f
 expect surface-too-few-mesh 2 "needs at least 4 samples, got [0-3]" -- "$bin" mesh few.csv --domain "$data/surfaces/sphere.off" --radius 0.9 --output few.off
 # varying radii: centers inside larger disks are no conflict, so a sample reads back
 expect surface-curvature-eight 0 "^sample: " -- "$bin" sample --domain "$eight" --sizing curvature:0.02,0.06 --output ec.csv
-expect surface-curvature-tune 0 "reached" -- "$bin" tune --domain "$eight" --sizing curvature:0.02,0.06 --input ec.csv --target-fraction 0.6
+expect surface-curvature-tune 0 "reached" -- "$bin" tune --domain "$eight" --sizing curvature:0.02,0.06 --input ec.csv --target-fraction 0.6 -o /dev/null
 # Sharp features (#15): detected at 60 degrees by default, held by fixed disks; a bad
 # angle, and --features on a flat domain, are refused.
 fandisk="$data/surfaces/fandisk.off"
@@ -478,21 +481,21 @@ assert len(m.cells_dict['triangle']) == faces and len(m.cells_dict['line']) == l
 done
 expect surface-auto 0 "^sample: [0-9]+ disks \([1-9][0-9]* on feature curves\), .*sizing thickness sizing min\(0\.05, 0\.45 thickness, 0\.9 curve gap\) graded at 0\.2, smallest 0\.0141 near \(0\.442, 0\.224, -0\.0794\)" -- "$bin" sample --domain "$fandisk" --sizing auto:0.05 --output fa.csv
 expect surface-auto-report 0 "^report: .*maximal, conflict-free; mesh: .*manifold yes, genus 0" -- "$bin" report fa.csv --domain "$fandisk" --sizing auto:0.05
-expect features-none 0 "^sample: [0-9]+ disks, eta .*genus 0, closed, area" -- "$bin" sample --domain "$fandisk" --radius 0.02 --features none
-expect features-angle 0 "closed, [0-9]+ feature curves" -- "$bin" sample --domain "$fandisk" --radius 0.02 --features 30
+expect features-none 0 "^sample: [0-9]+ disks, eta .*genus 0, closed, area" -- "$bin" sample --domain "$fandisk" --radius 0.02 --features none -o /dev/null
+expect features-angle 0 "closed, [0-9]+ feature curves" -- "$bin" sample --domain "$fandisk" --radius 0.02 --features 30 -o /dev/null
 expect features-bad 2 "--features 200: give a dihedral angle in degrees strictly between 0 and 180" -- "$bin" sample --domain "$fandisk" --radius 0.02 --features 200
 expect features-word 2 "--features sharp: give a dihedral angle" -- "$bin" sample --domain "$fandisk" --radius 0.02 --features sharp
 # Stray folds: the elephant's 60-degree edges are short scratches with loose ends, dropped
 # by default; ANGLE:0 keeps every one (84 curves); a bad share is refused.
 elephant="$data/surfaces/elephant.off"
-expect features-stray-dropped 0 "^sample: [0-9]+ disks, eta .*genus 3, closed, area" -- "$bin" sample --domain "$elephant" --radius 0.05
-expect features-stray-kept 0 "closed, 84 feature curves" -- "$bin" sample --domain "$elephant" --radius 0.05 --features 60:0
+expect features-stray-dropped 0 "^sample: [0-9]+ disks, eta .*genus 3, closed, area" -- "$bin" sample --domain "$elephant" --radius 0.05 -o /dev/null
+expect features-stray-kept 0 "closed, 84 feature curves" -- "$bin" sample --domain "$elephant" --radius 0.05 --features 60:0 -o /dev/null
 expect features-stray-bad 2 "--features 60:x: give a dihedral angle .*:STRAY" -- "$bin" sample --domain "$elephant" --radius 0.05 --features 60:x
 expect box-size-planar 2 "--width and --height size the periodic box; --domain .*square_with_hole\.poly has its own size" -- "$bin" sample --domain "$data/domains/square_with_hole.poly" --radius 0.05 --width 2
 expect features-flat 2 "--features applies to curved surfaces only" -- "$bin" sample --domain periodic --radius 0.05 --features 60
 expect surface-boundary 0 "[0-9]+ disks \([0-9]+ on the boundary\), .*1 boundary loop with 4 corners" -- "$bin" sample --domain "$data/surfaces/mesh_with_border.off" --radius 4 --output mb.csv
 expect surface-boundary-read 0 "[0-9]+ disks \([1-9][0-9]* on the boundary\), .*maximal, conflict-free" -- "$bin" report mb.csv --domain "$data/surfaces/mesh_with_border.off" --radius 4
-expect flat-off-is-planar 0 "planar domain .*square_with_hole\.off" -- "$bin" sample --domain "$data/domains/square_with_hole.off" --radius 0.05
+expect flat-off-is-planar 0 "planar domain .*square_with_hole\.off" -- "$bin" sample --domain "$data/domains/square_with_hole.off" --radius 0.05 -o /dev/null
 # remesh: a surface in, exactly N vertices out (OFF header counted here), the sharp edges
 # kept as OBJ lines, the report as JSON; bad input refused before any file is written.
 expect remesh 0 "^remesh: 2000 vertices \(as asked\), [0-9]+ triangles, [1-9][0-9]* edges along feature curves, manifold yes, genus 0 \(input genus 0\), angles 3[0-9]\.[0-9]+\.\.[0-9.]+ deg, [0-9.]+ % in \[50,70\]" -- "$bin" remesh "$fandisk" --vertices 2000 -o re.obj --json re.json
@@ -568,7 +571,7 @@ expect surface-report-png 0 "^report: " -- "$bin" report e4.csv --domain "$eight
 [ "$(ls surface-pics | tr '\n' ' ')" = "angles.png edges.png surface.png " ] && head -c 8 surface-pics/surface.png | grep -q PNG &&
   pass=$((pass + 1)) || { echo "FAIL surface pictures"; ls surface-pics; fails=$((fails + 1)); }
 expect surface-angle 2 "angle injection triangulates" -- "$bin" tune --domain "$eight" --radius 0.045 --input e.csv --target-count 420 --method angle --output never.csv
-expect surface-crystal 0 "reached.*phase crystal ejection" -- "$bin" tune --domain "$eight" --radius 0.045 --input e.csv --target-fraction 0.5 --method crystal-eject
+expect surface-crystal 0 "reached.*phase crystal ejection" -- "$bin" tune --domain "$eight" --radius 0.045 --input e.csv --target-fraction 0.5 --method crystal-eject -o /dev/null
 absent surface-angle-output never.csv
 expect surface-report-radius-from-csv 0 "^report: [0-9]+ disks, .*maximal, conflict-free; mesh: .*manifold yes" -- "$bin" report e4.csv --domain "$eight"
 expect surface-mesh-vtk 0 "e4\.vtk" -- "$bin" mesh e4.csv --domain "$eight" --radius 0.045 --output e4.vtk

@@ -184,9 +184,9 @@ MeshFormat output_mesh_format(const std::string& path, const std::string& format
                               bool surface = false);
 /// --format on a command that writes a mesh.
 void add_format_option(CLI::App* cmd, std::string& format);
-/// After sample or tune without --output: a note on stderr that the `count` disks were
-/// not written, and how to write them.
-void note_not_written(const std::string& output, std::size_t count);
+/// Before sample or tune does any work: InvalidInput (exit 2) when it would write
+/// nothing (no --output and no --svg), saying how to ask for the disks.
+void require_output(const std::string& output, const std::string& svg, const char* command);
 
 /// A file a command reads or writes, with the option (or argument) that names it.
 struct NamedFile {

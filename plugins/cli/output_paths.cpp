@@ -54,13 +54,12 @@ void add_format_option(CLI::App* cmd, std::string& format) {
       "ply-binary, vtk, vtu, msh, stl (triangle: Triangle's .node/.ele pair, by path only)");
 }
 
-void note_not_written(const std::string& output, std::size_t count) {
-  if (!output.empty()) return;
-  say(
-               "disktune: note: no --output given: the %zu disks were not written (add -o "
-               "FILE.csv, or -o - for "
-               "standard output)\n",
-               count);
+void require_output(const std::string& output, const std::string& svg, const char* command) {
+  if (!output.empty() || !svg.empty()) return;
+  throw InvalidInput(
+      std::string(command) +
+      ": nothing would be written: give --output FILE.csv (or -o - for standard output, "
+      "-o /dev/null for the summary line alone)");
 }
 
 namespace {

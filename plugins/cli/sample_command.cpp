@@ -19,6 +19,7 @@ int run_sample(const SampleJob& job) {
   check_output_folder(job.output);
   check_output_folder(job.svg);
   const CommandDomain domain = open_domain(job.domain);
+  require_output(job.output, job.svg, "sample");
   Rng rng(job.seed);
   const auto t0 = std::chrono::steady_clock::now();
   const Packing packing = domain.sample(rng);
@@ -26,9 +27,8 @@ int run_sample(const SampleJob& job) {
   if (!job.output.empty()) write_points_csv(job.output, packing);
   if (!job.svg.empty()) write_packing_svg(job.svg, packing);
   say("sample: %zu disks, %s, %.3f s (%s, %s)%s%s\n", packing.size(),
-              domain.density_text(packing.size()).c_str(), seconds, domain.radius_text().c_str(),
-              domain.describe().c_str(), job.output.empty() ? "" : " -> ", job.output.c_str());
-  note_not_written(job.output, packing.size());
+      domain.density_text(packing.size()).c_str(), seconds, domain.radius_text().c_str(),
+      domain.describe().c_str(), job.output.empty() ? "" : " -> ", job.output.c_str());
   return kExitOk;
 }
 

@@ -137,16 +137,16 @@ int run_surface_sample(const SampleJob& job) {
   refuse_svg(job.svg, "sample");
   check_output_folder(job.output);
   const CommandDomain domain = open_domain(job.domain);
+  require_output(job.output, job.svg, "sample");
   Rng rng(job.seed);
   const auto t0 = std::chrono::steady_clock::now();
   const SurfacePacking packing = domain.sample_surface(rng);
   const double seconds = seconds_since(t0);
   if (!job.output.empty()) write_surface_csv(job.output, packing);
   say("sample: %zu disks%s, %s, %.3f s (%s, %s)%s%s\n", packing.size(),
-              boundary_text(packing).c_str(), domain.density_text(packing.size()).c_str(), seconds,
-              domain.radius_text().c_str(), domain.describe().c_str(),
-              job.output.empty() ? "" : " -> ", job.output.c_str());
-  note_not_written(job.output, packing.size());
+      boundary_text(packing).c_str(), domain.density_text(packing.size()).c_str(), seconds,
+      domain.radius_text().c_str(), domain.describe().c_str(), job.output.empty() ? "" : " -> ",
+      job.output.c_str());
   warn_too_few_to_mesh(packing.size());
   return kExitOk;
 }
@@ -157,10 +157,12 @@ int run_surface_tune(const TuneJob& job) {
   const CommandDomain domain = open_domain(job.domain);
   const std::size_t target = target_count_for_unit(job.target, domain.unit);  // fail early
   check_memory(domain, job.domain, static_cast<double>(target));
+  if (job.input.empty()) require_output(job.output, job.svg, "tune");
   Rng rng(job.seed);
   const auto t0 = std::chrono::steady_clock::now();
   SurfacePacking packing =
       job.input.empty() ? domain.sample_surface(rng) : domain.read_surface(job.input, true);
+  require_output(job.output, job.svg, "tune");  // after the input's own checks
   const std::size_t start = packing.size();
 
   const auto write_output = [&] { write_surface_csv(job.output, packing); };

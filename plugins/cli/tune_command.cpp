@@ -48,9 +48,11 @@ int run_tune(const TuneJob& given) {
   const double boundary = domain.planar ? boundary_unit(*domain.planar, domain.sizing.get(), domain.radius) : 0;
   const std::size_t target = target_count_for_unit(job.target, domain.unit, boundary);  // fail early
   check_memory(domain, job.domain, static_cast<double>(target));
+  if (job.input.empty()) require_output(job.output, job.svg, "tune");
   Rng rng(job.seed);
   const auto t0 = std::chrono::steady_clock::now();
   Packing packing = job.input.empty() ? domain.sample(rng) : domain.read(job.input, true);
+  require_output(job.output, job.svg, "tune");  // after the input's own checks
   const std::size_t start = packing.size();
 
   const auto write_output = [&] { write_points_csv(job.output, packing); };
@@ -120,11 +122,10 @@ TuneResult tune_with_progress(std::size_t target, Method method,
 
 int report_tune(std::size_t start, const TuneResult& res, const std::string& density,
                 double seconds, const std::string& where, const std::string& output) {
-  say("tune: %zu -> %zu disks (target %zu%s), %s, phase %s, %.3f s%s%s%s\n", start,
-              res.count, res.target, res.reached ? ", reached" : ", NOT reached", density.c_str(),
-              to_string(res.last_phase).c_str(), seconds, where.c_str(),
-              output.empty() ? "" : " -> ", output.c_str());
-  note_not_written(output, res.count);
+  say("tune: %zu -> %zu disks (target %zu%s), %s, phase %s, %.3f s%s%s%s\n", start, res.count,
+      res.target, res.reached ? ", reached" : ", NOT reached", density.c_str(),
+      to_string(res.last_phase).c_str(), seconds, where.c_str(), output.empty() ? "" : " -> ",
+      output.c_str());
   if (!res.reached) {
     std::fprintf(stderr,
                  "disktune: the target was not reached: no phase makes progress beyond %zu disks "
