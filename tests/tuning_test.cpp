@@ -486,5 +486,20 @@ TEST(SparsestFirst, PicksTheTenthWithTheFewestNeighboursByAllPairs) {
   for (const DiskId d : detail::sparsest_first(g, g.ids())) EXPECT_FALSE(g.flags(d) & kFixed);
 }
 
+// With every disk fixed the sparse-first sweeps have nothing to try; the phase must
+// still end (sweeps over all disks, which move nothing, then a stall), not spin.
+TEST(SparsestFirst, ARepellerPhaseOverFixedDisksOnlyEnds) {
+  const PeriodicBox box(1, 1);
+  Rng rng(5);
+  Packing p = sample_mps(box, 0.05, rng);
+  for (const DiskId d : p.ids()) p.set_flags(d, kFixed);
+  const std::size_t n = p.size();
+  TuneOptions options;
+  options.method = Method::repeller_injection;
+  const TuneResult result = tune(p, box, Target::count(n + 10), rng, options);
+  EXPECT_FALSE(result.reached);
+  EXPECT_EQ(p.size(), n);
+}
+
 }  // namespace
 }  // namespace disktune

@@ -217,7 +217,10 @@ TuneResult run_phases(P& packing, const P& entry, double unit, std::size_t goal,
     std::vector<DiskId> order = packing.ids();
     for (std::size_t i = order.size(); i > 1; --i)
       std::swap(order[i - 1], order[uniform_index(rng, i)]);
-    if (sparse) order = sparsest_first(packing, order);
+    if (sparse) {
+      std::vector<DiskId> sparsest = sparsest_first(packing, order);
+      if (!sparsest.empty()) order = std::move(sparsest);  // else every disk is fixed: all
+    }
     const std::size_t tick = std::max<std::size_t>(order.size() / 64, 1);
     for (std::size_t k = 0; k < order.size() && missing() > 0; ++k) {
       if (!packing.alive(order[k])) continue;
