@@ -31,6 +31,20 @@ TEST(PhaseTimeLeft, AtAConstantPaceTheTimeLeftIsWhatIsLeftOverThePace) {
   EXPECT_NEAR(clock.phase_fraction(), 0.2, 0.01);
 }
 
+TEST(PhaseTimeLeft, ALongPhaseKeepsReadingItsLatestReports) {
+  // 200,000 reports over 200 s at 50 disks a second, then 10 s at 20 (the window, 30 %
+  // of the phase, sees both paces): the fit's old reports are dropped on the way.
+  PhaseTimeLeft clock;
+  double t = 0, done = 0;
+  for (int k = 0; k < 200000; ++k, t += 0.001, done += 0.05)
+    clock.add(t, report(done, 1000, 30000));
+  EXPECT_NEAR(clock.phase_seconds(), 199.999, 1e-6);
+  EXPECT_NEAR(clock.seconds_left(), (29000 - done + 0.05) / 50, 0.02 * (29000 - done) / 50);
+  for (int k = 0; k < 10000; ++k, t += 0.001, done += 0.02) clock.add(t, report(done, 1000, 30000));
+  // Pace 20 now, and falling as the fit sees it: more than the left over 20 a second.
+  EXPECT_GT(clock.seconds_left(), (29000 - done) / 20);
+}
+
 TEST(PhaseTimeLeft, APaceThatFallsWithTheDisksDoneIsFollowed) {
   // pace(x) = r0 e^(-k x): x(t) = ln(1 + k r0 t) / k, the goal G at (e^(k G) - 1) / (k r0).
   const double r0 = 1000, k = 0.002, G = 1500;

@@ -37,9 +37,12 @@ class PhaseTimeLeft {
     double seconds;
     double done;  // disks added or removed since the phase's first report
   };
-  std::vector<Report> reports_;
+  double window() const;         // the span of the latest reports that the fit reads
+  std::vector<Report> reports_;  // the phase's, but those older than the window
   Phase phase_ = Phase::none;
   std::size_t start_ = 0, goal_ = 0, count_ = 0;
+  std::size_t first_ = 0;  // the window's first report
+  double phase_start_ = 0;
 };
 
 }  // namespace disktune

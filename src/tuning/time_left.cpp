@@ -19,26 +19,37 @@ void PhaseTimeLeft::add(double seconds, const Progress& progress) {
     phase_ = progress.phase;
     goal_ = progress.phase_goal;
     start_ = progress.count;
+    phase_start_ = seconds;
+    first_ = 0;
   }
   count_ = progress.count;
   const double done = std::fabs(static_cast<double>(progress.count) - static_cast<double>(start_));
   reports_.push_back({seconds, done});
+  // Only the window's reports count (seconds_left), and its start never goes back: the
+  // older ones are passed for good, and dropped now and then.
+  while (first_ + 1 < reports_.size() && seconds - reports_[first_].seconds > window()) ++first_;
+  if (first_ >= 1024 && 2 * first_ >= reports_.size()) {
+    reports_.erase(reports_.begin(), reports_.begin() + static_cast<std::ptrdiff_t>(first_));
+    first_ = 0;
+  }
 }
 
 double PhaseTimeLeft::phase_seconds() const {
-  return reports_.empty() ? 0 : reports_.back().seconds - reports_.front().seconds;
+  return reports_.empty() ? 0 : reports_.back().seconds - phase_start_;
+}
+
+double PhaseTimeLeft::window() const {
+  // The last 30 % of the phase's time, at least half a second of it (the pace drifts; a
+  // short window follows it, a long one smooths the noise).
+  return std::max(0.5, 0.3 * phase_seconds());
 }
 
 double PhaseTimeLeft::seconds_left() const {
   const double left = std::fabs(static_cast<double>(goal_) - static_cast<double>(count_));
   if (left == 0) return 0;
   if (reports_.size() < 4) return kUnknown;
-  // The latest reports: the last 30 % of the phase's time, at least half a second of it
-  // (the pace drifts; a short window follows it, a long one smooths the noise).
   const Report& now = reports_.back();
-  const double window = std::max(0.5, 0.3 * phase_seconds());
-  auto first = reports_.begin();
-  while (now.seconds - first->seconds > window) ++first;
+  const auto first = reports_.begin() + static_cast<std::ptrdiff_t>(first_);  // the window's first
   const auto middle = std::lower_bound(first, reports_.end(), (first->seconds + now.seconds) / 2,
                                        [](const Report& r, double t) { return r.seconds < t; });
   if (reports_.end() - first < 4 || !(now.seconds > first->seconds)) return kUnknown;
