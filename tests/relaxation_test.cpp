@@ -274,6 +274,96 @@ TEST(Relaxation, GivesTheSamePackingOnAnyNumberOfThreads) {
   }
 }
 
+// Maximality::at_end: moves checked for conflicts only, then the voids they opened closed.
+// The result passes the oracle, keeps the count and the fixed disks, is the same on any
+// number of threads, and meshes as well as checking every move does. At least some of
+// the runs must close their voids (a result equal to every_move's, bit for bit, is the
+// fall-back's: the test would not reach the closing at all).
+TEST(Relaxation, AtTheEndLeavesAValidPackingMeshedAsWellAsCheckingEveryMove) {
+  struct Case {
+    const char* file;
+    const char* spec;
+  };
+  const Case cases[] = {{"fandisk.off", "0.04"},
+                        {"fandisk.off", "auto:0.05"},
+                        {"mesh_with_border.off", "0.35"},
+                        {"elephant.off", "0.012"},
+                        {"eight.off", "0.02"}};
+  std::size_t closed = 0, runs = 0;
+  for (const auto& [file, spec] : cases) {
+    SurfaceDomain d = *test::surface_file(file);
+    d.set_features(detect_features(d, {60, 60, 0}));
+    const auto surface = std::make_shared<const SurfaceDomain>(std::move(d));
+    for (const std::uint64_t seed : {1, 2}) {
+      Rng rng(seed);
+      const SurfacePacking start = sample_mps(surface, parse_surface_sizing(spec, *surface), rng);
+      const double spacing = hex_spacing(static_cast<double>(start.size()) / density_unit(start));
+      const std::string what = std::string(file) + " " + spec + " seed " + std::to_string(seed);
+      SurfacePacking every = start;
+      Rng every_rng(9);
+      relax(every, spacing, 12, every_rng, {}, 1, Maximality::every_move);
+      std::vector<Vec3> first;
+      for (const unsigned threads : {1u, 3u}) {
+        SurfacePacking p = start;
+        Rng same(9);
+        relax(p, spacing, 12, same, {}, threads, Maximality::at_end);
+        std::vector<Vec3> centers;
+        for (const DiskId id : p.ids()) centers.push_back(p.center(id));
+        if (threads > 1) {
+          EXPECT_TRUE(centers == first) << what << ": " << threads << " threads differ from one";
+          continue;
+        }
+        first = centers;
+        ASSERT_EQ(p.size(), start.size()) << what;
+        const auto rep = test::surface_report(p);
+        EXPECT_TRUE(rep.ok()) << what << ": " << rep.summary();
+        for (const DiskId id : start.ids()) {
+          if (!(start.flags(id) & kFixed)) continue;
+          EXPECT_EQ(squared_norm(p.center(id) - start.center(id)), 0.0) << what;
+        }
+        std::size_t same_as_every = 0;
+        for (const DiskId id : p.ids())
+          same_as_every += squared_norm(p.center(id) - every.center(id)) == 0;
+        closed += same_as_every < p.size();
+        ++runs;
+        const test::AngleShares at_end = test::angle_shares(restricted_delaunay(p));
+        const test::AngleShares checked = test::angle_shares(restricted_delaunay(every));
+        std::printf(
+            "[ relax ] %s, %zu disks, 12 sweeps: angles in [50,70] %.3f (every move checked %.3f), "
+            "obtuse "
+            "%.4f (%.4f)%s\n",
+            what.c_str(), p.size(), at_end.near_60, checked.near_60, at_end.obtuse, checked.obtuse,
+            same_as_every == p.size() ? ", fell back" : "");
+        EXPECT_GT(at_end.near_60, checked.near_60 - 0.02) << what;
+        EXPECT_LT(at_end.obtuse, checked.obtuse + 0.01) << what;
+      }
+    }
+  }
+  EXPECT_GE(closed, runs - 2) << "most runs should close their voids without falling back";
+}
+
+// A spring length of 2.5 radii jams the disks into rings around voids none of them can
+// reach without meeting another: the voids will not close, and the sweeps run again with
+// every move checked, from the same start and seed: every_move's packing, bit for bit.
+TEST(Relaxation, AtTheEndFallsBackToCheckingEveryMoveWhereVoidsWillNotClose) {
+  const auto surface = test::surface_file("elephant.off");
+  Rng rng(1);
+  const SurfacePacking start = sample_mps(surface, SurfaceSizing::constant(0.015), rng);
+  SurfacePacking every = start, at_end = start;
+  Rng a(9), b(9);
+  const std::size_t every_moved = relax(every, 2.5, 12, a, {}, 2, Maximality::every_move);
+  const std::size_t at_end_moved = relax(at_end, 2.5, 12, b, {}, 2, Maximality::at_end);
+  EXPECT_EQ(at_end_moved, every_moved);
+  ASSERT_EQ(at_end.size(), every.size());
+  std::size_t differ = 0;
+  for (const DiskId id : every.ids())
+    differ += squared_norm(at_end.center(id) - every.center(id)) > 0;
+  EXPECT_EQ(differ, 0u);
+  EXPECT_EQ(uniform01(a), uniform01(b)) << "the fall-back starts from the caller's random state";
+  const auto rep = test::surface_report(at_end);
+  EXPECT_TRUE(rep.ok()) << rep.summary();
+}
+
 // After relaxation about one triangle in a hundred is obtuse; moving the vertex of each
 // obtuse angle out of the circle over the opposite edge leaves far fewer, keeps the
 // packing valid (oracle), the fixed disks and the mesh's topology, and the share of

@@ -19,9 +19,11 @@
 #include <utility>
 #include <vector>
 
+#include "../geometry/threads.h"
 #include "../voids/surface_cell.h"
 #include "colour_blocks.h"
 #include "disktune/surface_tuning.h"
+#include "disktune/surface_voids.h"
 #include "disktune/tuning.h"
 #include "space.h"
 
@@ -36,10 +38,11 @@ double spring(double w) { return w >= 1.5 ? 0.0 : (1.25 * w - 2.375) * w * w + 1
 // meets no other disk and still holds everything only it covers (a void lies in the
 // convex hull of its points in each plane, and a disk is convex). Returns the part of
 // the way it went: 1, 0.5, 0.25, or 0 where none fits. `near_p`: the triangles near p,
-// where known (a surface's).
+// where known (a surface's). Unless `keep_covered`, only meeting no disk counts: the
+// caller closes the voids such moves open (close_voids).
 template <class P>
 double move_toward(P& packing, DiskId p, typename detail::Space<P>::Location to,
-                   const std::vector<std::uint32_t>* near_p = nullptr) {
+                   const std::vector<std::uint32_t>* near_p = nullptr, bool keep_covered = true) {
   using S = detail::Space<P>;
   const auto c = packing.center(p);
   const double r = packing.radius(p);
@@ -48,6 +51,10 @@ double move_toward(P& packing, DiskId p, typename detail::Space<P>::Location to,
   for (int halvings = 0; halvings < 3; ++halvings, step = step * 0.5, part *= 0.5) {
     typename S::Point x;
     if (!S::project(packing, p, c + step, x) || packing.conflicts(x, p)) continue;
+    if (!keep_covered) {
+      packing.move(p, x);
+      return part;
+    }
     if (!S::covers_lifted_voids(packing, c, S::void_reach(r), p, x, near_p)) continue;
     detail::BasicUndoLog<P> log(packing);
     log.move(p, x);
@@ -86,13 +93,18 @@ NearTriangles<P> near_triangles(const P& packing) {
   }
 }
 
+// With `check_all` false (a surface's), a disk with no fixed disk in reach of its
+// springs is checked for conflicts only (move_toward): pushed off a boundary or a
+// crease, a disk opens gaps there that no neighbour fills, elsewhere a few.
 template <class P>
-bool relax_disk(P& packing, DiskId p, double spacing, Steps<P>* last, NearTriangles<P>& near) {
+bool relax_disk(P& packing, DiskId p, double spacing, Steps<P>* last, NearTriangles<P>& near,
+                bool check_all = true) {
   using S = detail::Space<P>;
   if (packing.flags(p) & (kFixed | kFrozen)) return false;
   const auto c = packing.center(p);
   const double r = packing.radius(p), rest = spacing * r;
   auto force = c - c;
+  bool fixed_near = false;
   S::for_each_near(packing, c, 1.5 * rest, [&](const auto& q) {
     // Across a feature too, though disks there do not conflict: pushed apart, they do not
     // make thin triangles at the crease (fandisk, r = 0.04, 12 sweeps: angles in [50, 70]
@@ -101,7 +113,9 @@ bool relax_disk(P& packing, DiskId p, double spacing, Steps<P>* last, NearTriang
     const double d = std::sqrt(q.d2);
     // A fixed disk (a boundary or a crease) only pushes: pulled toward a crease, a disk
     // can end where its Voronoi cell reaches across it.
-    const double f = packing.flags(q.id) & kFixed ? std::max(spring(d / rest), 0.0) : spring(d / rest);
+    const bool fixed = packing.flags(q.id) & kFixed;
+    fixed_near = fixed_near || fixed;
+    const double f = fixed ? std::max(spring(d / rest), 0.0) : spring(d / rest);
     force = force + (c - q.image) * (f / d);
   });
   // Half the force, at most a quarter of the rest length: steps that do not overshoot.
@@ -114,7 +128,8 @@ bool relax_disk(P& packing, DiskId p, double spacing, Steps<P>* last, NearTriang
   if (length > 0.25 * rest) step = step * (0.25 * rest / length);
   double part = 0;
   if constexpr (std::is_same_v<P, SurfacePacking>) {
-    part = move_toward(packing, p, c + step, &near.of(packing, p));
+    part = check_all || fixed_near ? move_toward(packing, p, c + step, &near.of(packing, p))
+                                   : move_toward(packing, p, c + step, nullptr, false);
   } else {
     part = move_toward(packing, p, c + step);
   }
@@ -148,7 +163,7 @@ std::size_t sweep(P& packing, double spacing, Rng& rng, Steps<P>* last, NearTria
 // differ, and so do the cells two such moves write. The cells a move can enter are made
 // beforehand, so no move changes the grid's table.
 std::size_t sweep(SurfacePacking& packing, double spacing, Rng& rng, Steps<SurfacePacking>* last,
-                  detail::TrianglesNearDisks& near, unsigned threads) {
+                  detail::TrianglesNearDisks& near, unsigned threads, bool check_all = true) {
   std::vector<DiskId> order = packing.ids();
   for (std::size_t i = order.size(); i > 1; --i)
     std::swap(order[i - 1], order[uniform_index(rng, i)]);
@@ -173,16 +188,91 @@ std::size_t sweep(SurfacePacking& packing, double spacing, Rng& rng, Steps<Surfa
     }
     detail::for_each_group(groups, threads, [&](const std::vector<DiskId>& group) {
       std::size_t here = 0;
-      for (const DiskId p : group) here += relax_disk(packing, p, spacing, last, near);
+      for (const DiskId p : group) here += relax_disk(packing, p, spacing, last, near, check_all);
       moved += here;
     });
   }
   return moved;
 }
 
+// The triangles of the surface holding a void point, in order (all scanned, on every core).
+std::vector<std::uint32_t> triangles_with_voids(const SurfacePacking& packing, unsigned threads) {
+  constexpr std::size_t kChunk = 256;
+  const std::size_t n = packing.domain().triangles().size();
+  std::vector<char> holed(n, 0);
+  detail::parallel_for((n + kChunk - 1) / kChunk, threads, [&](std::size_t chunk, unsigned) {
+    thread_local std::vector<SurfaceVoidPoint> found;
+    for (std::size_t t = chunk * kChunk; t < std::min(n, (chunk + 1) * kChunk); ++t) {
+      found.clear();
+      void_points_in_triangle(packing, t, {}, found);
+      holed[t] = !found.empty();
+    }
+  });
+  std::vector<std::uint32_t> out;
+  for (std::size_t t = 0; t < n; ++t)
+    if (holed[t]) out.push_back(static_cast<std::uint32_t>(t));
+  return out;
+}
+
+// Closes the voids that sweeps without coverage checks opened (a handful among 10^4
+// disks: where a spring pulled a disk off a gap no neighbour filled). Each void point
+// pulls the nearest free disk within two radii that can cover it (on its patch) until
+// it lies a tenth of that disk's radius inside, by a checked move (move_toward), or the
+// next nearest where that one has no room. A checked move opens no void, so the voids
+// only shrink, within the triangles found at first. False where some remains after
+// 16 rounds.
+bool close_voids(SurfacePacking& packing, unsigned threads, std::size_t& moved) {
+  std::vector<std::uint32_t> holed = triangles_with_voids(packing, threads);
+  std::vector<SurfaceVoidPoint> voids;
+  std::vector<std::pair<double, DiskId>> near;  // squared distance, disk
+  for (int round = 0;; ++round) {
+    voids.clear();
+    std::vector<std::uint32_t> still;
+    for (const std::uint32_t t : holed) {
+      const std::size_t before = voids.size();
+      void_points_in_triangle(packing, t, {}, voids);
+      if (voids.size() > before) still.push_back(t);
+    }
+    holed.swap(still);
+    if (voids.empty()) return true;
+    if (round == 16) return false;
+    for (const SurfaceVoidPoint& v : voids) {
+      const PatchSet patch = packing.index().patch_of_triangle(v.at.triangle);
+      near.clear();
+      packing.for_each_near(v.at.p, 2 * packing.max_radius(), [&](DiskId q) {
+        if (!(packing.flags(q) & (kFixed | kFrozen)) &&
+            packing.share_patch(packing.patches(q), patch))
+          near.emplace_back(squared_norm(packing.center(q) - v.at.p), q);
+      });
+      std::sort(near.begin(), near.end());
+      const auto pull = [&](DiskId q, double d, double inside) {
+        const Vec3 c = packing.center(q);
+        return move_toward(packing, q, c + (v.at.p - c) * ((d - inside) / d)) > 0;
+      };
+      // Steps of a tenth of a radius first, then smaller ones (most voids are slivers,
+      // and a disk held on all sides may still have room for a hair).
+      bool closed = false;
+      for (const double share : {0.9, 0.99, 0.999}) {
+        for (const auto& [d2, q] : near) {
+          const double d = std::sqrt(d2), inside = share * packing.radius(q);
+          if (d <= inside) {
+            closed = true;  // covered by a move made since the scan
+          } else if (pull(q, d, inside)) {
+            ++moved;
+            closed = true;
+          }
+          if (closed) break;
+        }
+        if (closed) break;
+      }
+    }
+  }
+}
+
 template <class P>
 std::size_t relax_in(P& packing, double spacing, int sweeps, Rng& rng,
-                     const std::function<bool(int)>& after_sweep, unsigned threads) {
+                     const std::function<bool(int)>& after_sweep, unsigned threads,
+                     bool check_all = true) {
   check_spacing(spacing);
   if (sweeps < 0) throw InvalidInput("relax: the number of sweeps must be 0 or more, got " + std::to_string(sweeps));
   Steps<P> last(packing.id_bound(), typename Steps<P>::value_type{});
@@ -190,7 +280,7 @@ std::size_t relax_in(P& packing, double spacing, int sweeps, Rng& rng,
   std::size_t moved = 0;
   for (int k = 0; k < sweeps; ++k) {
     if constexpr (std::is_same_v<P, SurfacePacking>) {
-      moved += sweep(packing, spacing, rng, &last, near, threads);
+      moved += sweep(packing, spacing, rng, &last, near, threads, check_all);
     } else {
       moved += sweep(packing, spacing, rng, &last, near);
     }
@@ -218,8 +308,21 @@ std::size_t relax(Packing& packing, double spacing, int sweeps, Rng& rng, const 
 }
 
 std::size_t relax(SurfacePacking& packing, double spacing, int sweeps, Rng& rng,
-                  const std::function<bool(int)>& after_sweep, unsigned threads) {
-  return relax_in(packing, spacing, sweeps, rng, after_sweep, detail::thread_count(threads));
+                  const std::function<bool(int)>& after_sweep, unsigned threads,
+                  Maximality maximality) {
+  threads = detail::thread_count(threads);
+  if (maximality == Maximality::every_move || sweeps <= 0)
+    return relax_in(packing, spacing, sweeps, rng, after_sweep, threads);
+  // The sweeps with only the conflict checks (but next to fixed disks), then the voids
+  // they opened closed; where one will not close, the sweeps again from the start with
+  // every move checked.
+  const SurfacePacking start = packing;
+  const Rng start_rng = rng;
+  std::size_t moved = relax_in(packing, spacing, sweeps, rng, after_sweep, threads, false);
+  if (close_voids(packing, threads, moved)) return moved;
+  packing = start;
+  rng = start_rng;
+  return relax_in(packing, spacing, sweeps, rng, after_sweep, threads);
 }
 
 std::size_t open_obtuse_angles(SurfacePacking& packing, const SurfaceMesh& mesh) {

@@ -71,20 +71,25 @@ bool cell_inside(const SurfacePacking& packing, DiskId p, Vec3 x, double radius,
   for (const std::uint32_t t : *near_p) {
     const PatchSet patch = index.patch_of_triangle(t);
     if (!packing.share_patch(packing.patches(p), patch)) continue;  // p covers nothing there
-    if (squared_norm(index.closest_point(t, c) - c) > R * R) continue;
+    const double h = index.plane(t).height(c);  // the plane's distance: a cheap first test
+    if (h * h > R * R || squared_norm(index.closest_point(t, c) - c) > R * R) continue;
     Polygon *poly = &buffers[0], *clipped = &buffers[1];
     poly->size = 3;
     for (int k = 0; k < 3; ++k) poly->corner[k] = vertices[corners[t][k]];
-    double far2 = farthest2(*poly, c);
+    // Clipped by the nearest bisectors first, the part soon lies in the ball at x, and
+    // further cuts only shrink it.
+    const double inside2 = radius * radius;
+    double far2 = farthest2(*poly, c), far_x2 = farthest2(*poly, x);
     for (const auto& [d2, q] : near) {
-      if (far2 < 0.25 * d2 * (1 - 1e-9)) break;
+      if (far_x2 <= inside2 || far2 < 0.25 * d2 * (1 - 1e-9)) break;
       if (!packing.share_patch(packing.patches(q), patch)) continue;  // it covers nothing there
       if (!(d2 > 0)) continue;  // no bisector: the cell stays larger, never smaller
       if (!clip(*poly, c, packing.center(q) - c, 0.5 * d2, *clipped)) return false;
       std::swap(poly, clipped);
       far2 = farthest2(*poly, c);
+      far_x2 = farthest2(*poly, x);
     }
-    if (farthest2(*poly, x) > radius * radius) return false;
+    if (far_x2 > inside2) return false;
   }
   return true;
 }

@@ -97,7 +97,7 @@ std::optional<RemeshResult> remesh_at(const std::shared_ptr<const SurfaceDomain>
         cancelled = options.tune.on_progress && !options.tune.on_progress(progress);
         return !cancelled;
       },
-      options.threads);
+      options.threads, Maximality::at_end);
   if (cancelled) throw Cancelled("remesh: cancelled by the progress callback during relaxation");
 
   // tune, relax and open_obtuse_angles keep the packing maximal
