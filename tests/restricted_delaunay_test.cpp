@@ -214,6 +214,68 @@ TEST(RestrictedDelaunay, AMaximalPackingsCutDualEdgesKeepEveryTriangle) {
   }
 }
 
+// A mesh made again from what the last one kept (RestrictedDelaunayReuse) is the mesh
+// made anew, triangle for triangle and feature edge for feature edge: after a few disks
+// moved (open_obtuse_angles, and single disks moved by hand), after many moved (a
+// relaxation sweep: built anew), after the count changed (tuned), with and without the
+// cut for maximal packings, on several threads, and when the same object then meshes
+// another surface.
+TEST(RestrictedDelaunay, MeshingAgainFromTheLastMeshGivesTheNewMesh) {
+  struct Case {
+    const char* name;
+    double fraction;  // r, of the bounding box's diagonal
+    double features;  // degrees; 0: none
+  };
+  const Case cases[] = {{"elephant.off", 0.01, 0},
+                        {"fandisk.off", 0.012, 60},
+                        {"mesh_with_border.off", 0.01, 0},
+                        {"sphere.off", 0.015, 0}};
+  RestrictedDelaunayReuse reuse;  // one for all: a new surface must start afresh
+  for (const auto& [name, fraction, features] : cases) {
+    SurfaceDomain s = surface(name);
+    if (features > 0) s.set_features(detect_features(s, {features, features, 0}));
+    const auto shared = std::make_shared<const SurfaceDomain>(std::move(s));
+    const double r = fraction * diagonal(*shared);
+    Rng rng(5);
+    SurfacePacking p = sample_mps(shared, SurfaceSizing::constant(r), rng);
+    relax(p, 1.28, 10, rng, {}, 2);
+    std::size_t step = 0;
+    const auto same = [&](Coverage coverage, unsigned threads) {
+      const std::string what = std::string(name) + ", step " + std::to_string(++step);
+      const SurfaceMesh fresh = restricted_delaunay(p, coverage, threads);
+      const SurfaceMesh again = restricted_delaunay(p, coverage, threads, &reuse);
+      ASSERT_GT(fresh.triangles.size(), p.size()) << what;
+      EXPECT_EQ(again.triangles, fresh.triangles) << what;
+      EXPECT_EQ(again.feature_edges, fresh.feature_edges) << what;
+    };
+    same(Coverage::maximal, 2);
+    for (int round = 0; round < 2; ++round) {
+      open_obtuse_angles(p, restricted_delaunay(p, Coverage::maximal, 2));
+      same(Coverage::maximal, 1 + round * 2);
+    }
+    // One disk, then a handful, moved by hand (keeping the packing as it is otherwise).
+    const std::vector<DiskId> ids = p.ids();
+    for (const std::size_t count : {1u, 7u}) {
+      for (std::size_t k = 0; k < count; ++k) {
+        const DiskId id = ids[(k * 7919 + count) % ids.size()];
+        if (p.flags(id) & kFixed) continue;
+        // A tenth of the way to its triangle's centroid: still on the triangle.
+        const auto& tri = shared->triangles()[p.point(id).triangle];
+        const Vec3 centroid =
+            (shared->vertices()[tri[0]] + shared->vertices()[tri[1]] + shared->vertices()[tri[2]]) *
+            (1.0 / 3);
+        p.move(id, {p.center(id) * 0.9 + centroid * 0.1, p.point(id).triangle});
+      }
+      same(Coverage::maximal, 2);
+    }
+    relax(p, 1.28, rng, 2);  // nearly every disk moves
+    same(Coverage::maximal, 2);
+    same(Coverage::unknown, 2);  // another reach: afresh
+    tune(p, Target::count(p.size() + 20), rng);
+    same(Coverage::unknown, 2);
+  }
+}
+
 // The dual edges are searched in chunks on several threads: the same mesh and the same
 // counts of each arithmetic's answers for any number of threads (more than the cores too),
 // with and without the search cut to a maximal packing's radius.

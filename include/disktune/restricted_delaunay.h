@@ -7,11 +7,12 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "disktune/surface_domain.h"
-#include "disktune/surface_packing.h"
 #include "disktune/surface_mesh.h"
+#include "disktune/surface_packing.h"
 #include "disktune/vec3.h"
 
 namespace disktune {
@@ -62,6 +63,32 @@ enum class Coverage { unknown, maximal };
 /// for any number.
 SurfaceMesh restricted_delaunay(const SurfacePacking& packing,
                                 Coverage coverage = Coverage::unknown, unsigned threads = 0);
+
+namespace detail {
+struct RestrictedDelaunayState;
+}
+/// What one mesh of a packing keeps for the next mesh of it once a few disks have moved
+/// (remesh meshes again after open_obtuse_angles): the Delaunay triangulation, in which
+/// the moved centers are moved, and each facet's verdict, which holds while its two
+/// cells stand (they fix its dual edge). The next mesh is the same as a new one's.
+/// Where more than one disk in eight moved, or the count or the surface changed, the
+/// triangulation is built anew.
+class RestrictedDelaunayReuse {
+ public:
+  RestrictedDelaunayReuse();
+  ~RestrictedDelaunayReuse();
+  RestrictedDelaunayReuse(RestrictedDelaunayReuse&&) noexcept;
+  RestrictedDelaunayReuse& operator=(RestrictedDelaunayReuse&&) noexcept;
+
+ private:
+  friend SurfaceMesh restricted_delaunay(const SurfacePacking&, Coverage, unsigned,
+                                         RestrictedDelaunayReuse*);
+  std::unique_ptr<detail::RestrictedDelaunayState> state_;
+};
+/// The mesh of a packing as above, starting from what `reuse` (where not null) kept of
+/// the last mesh it was given to, and keeping this one in it.
+SurfaceMesh restricted_delaunay(const SurfacePacking& packing, Coverage coverage, unsigned threads,
+                                RestrictedDelaunayReuse* reuse);
 
 /// The symmetric Hausdorff distance between the mesh's triangles and the surface,
 /// approximated from below: `samples_per_mesh` area-weighted random points on each (and

@@ -138,6 +138,9 @@ struct DualEdgeCounts {
   std::size_t interval = 0, ring = 0, rational = 0;
 };
 
+/// The triangulation a mesh was made from, kept for the next (restricted_delaunay.cpp).
+struct RestrictedDelaunayState;
+
 /// restricted_delaunay with the arithmetic chosen and the counts returned. With
 /// `covered_within` > 0 the caller vouches that every point of the surface lies within
 /// that distance of a sample: a dual edge is then searched only within it of its facet's
@@ -147,6 +150,7 @@ SurfaceMesh restricted_delaunay(const std::vector<Vec3>& samples, const SurfaceD
                                 const std::vector<std::uint32_t>& sample_patch,
                                 const std::vector<std::array<std::uint32_t, 2>>& feature_edges,
                                 DualArithmetic arithmetic, DualEdgeCounts* counts,
-                                double covered_within = 0, unsigned threads = 0);
+                                double covered_within = 0, unsigned threads = 0,
+                                RestrictedDelaunayState* state = nullptr);
 
 }  // namespace disktune::detail

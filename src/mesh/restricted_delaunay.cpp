@@ -55,8 +55,19 @@ using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = Kernel::Point_3;
 using Triangle3 = Kernel::Triangle_3;
 using VertexBase = CGAL::Triangulation_vertex_base_with_info_3<std::uint32_t, Kernel>;
-using CellBase =  // info: the cell's index among the finite cells
-    CGAL::Triangulation_cell_base_with_info_3<std::uint32_t, Kernel, CGAL::Delaunay_triangulation_cell_base_3<Kernel>>;
+// What a cell carries: its index among the finite cells (DualEdges' arrays), and for
+// meshing again after a few samples moved (RestrictedDelaunayReuse), a stamp naming it
+// (0: made or changed since the last mesh) and per facet the verdict found for it with
+// the cell across of that stamp (0 none, 1 no mesh triangle, 2 the triangle of its
+// sorted corners a < b < c, 3 that of a, c, b).
+struct CellInfo {
+  std::uint32_t index = 0, stamp = 0;
+  std::array<std::uint8_t, 4> verdict{};
+  std::array<std::uint32_t, 4> across{};
+};
+using CellBase =
+    CGAL::Triangulation_cell_base_with_info_3<CellInfo, Kernel,
+                                              CGAL::Delaunay_triangulation_cell_base_3<Kernel>>;
 using Tds = CGAL::Triangulation_data_structure_3<VertexBase, CellBase>;
 using Delaunay = CGAL::Delaunay_triangulation_3<Kernel, Tds>;
 using TriangleList = std::vector<Triangle3>;
@@ -395,7 +406,8 @@ class DualEdges {
     ball_radius_ = 1.001 * norm(Vec3{box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin()}) / 2;
     scale_ = 1 + std::hypot(ball_center_[0], ball_center_[1], ball_center_[2]) + ball_radius_;
     std::uint32_t index = 0;
-    for (auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c) c->info() = index++;
+    for (auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c)
+      c->info().index = index++;
     if (arithmetic == detail::DualArithmetic::filtered) {
       [[maybe_unused]] const RoundingFor<Interval> rounding;
       interval_centers_.reserve(index);
@@ -461,7 +473,7 @@ class DualEdges {
   template <class NT>
   PointBox box(Delaunay::Cell_handle c, Scratch& s) const {
     if constexpr (std::is_same_v<NT, Interval>) {
-      return interval_boxes_[c->info()];
+      return interval_boxes_[c->info().index];
     } else {
       return box_of(center<NT>(c, s));
     }
@@ -470,12 +482,12 @@ class DualEdges {
   template <class NT>
   const detail::HomogeneousPoint<NT>& center(Delaunay::Cell_handle c, Scratch& s) const {
     if constexpr (std::is_same_v<NT, Interval>) {
-      return interval_centers_[c->info()];
+      return interval_centers_[c->info().index];
     } else {
-      auto it = s.ring_centers.find(c->info());
+      auto it = s.ring_centers.find(c->info().index);
       if (it == s.ring_centers.end())
         it = s.ring_centers
-                 .emplace(c->info(),
+                 .emplace(c->info().index,
                           detail::circumcenter<Ring>(at(c, 0), at(c, 1), at(c, 2), at(c, 3)))
                  .first;
       return it->second;
@@ -704,11 +716,11 @@ class DualEdges {
   }
 
   const Exact::Point_3& exact_center(Delaunay::Cell_handle c, Scratch& s) const {
-    auto it = s.exact_centers.find(c->info());
+    auto it = s.exact_centers.find(c->info().index);
     if (it == s.exact_centers.end()) {
       it = s.exact_centers
-               .emplace(c->info(), CGAL::circumcenter(exact(at(c, 0)), exact(at(c, 1)),
-                                                      exact(at(c, 2)), exact(at(c, 3))))
+               .emplace(c->info().index, CGAL::circumcenter(exact(at(c, 0)), exact(at(c, 1)),
+                                                            exact(at(c, 2)), exact(at(c, 3))))
                .first;
     }
     return it->second;
@@ -730,7 +742,43 @@ class DualEdges {
   std::vector<PointBox> interval_boxes_;
 };
 
+// A facet's corners, sorted.
+std::array<std::uint32_t, 3> sorted_corners(const Delaunay::Facet& f) {
+  std::array<std::uint32_t, 3> t;
+  for (int k = 0; k < 3; ++k) t[k] = f.first->vertex((f.second + 1 + k) & 3)->info();
+  std::sort(t.begin(), t.end());
+  return t;
+}
+
+// The verdict f got with the same two cells around it, from either side, or 0.
+std::uint8_t known_verdict(const Delaunay::Facet& f) {
+  const Delaunay::Cell_handle c = f.first, d = c->neighbor(f.second);
+  const CellInfo &ci = c->info(), &di = d->info();
+  if (ci.verdict[f.second] != 0 && ci.across[f.second] == di.stamp) return ci.verdict[f.second];
+  const int j = d->index(c);
+  if (di.verdict[j] != 0 && di.across[j] == ci.stamp) return di.verdict[j];
+  return 0;
+}
+
 }  // namespace
+
+// The triangulation of the last mesh, kept for the next (RestrictedDelaunayReuse).
+struct detail::RestrictedDelaunayState {
+  Delaunay dt;
+  std::vector<Delaunay::Vertex_handle> vertex;  // of each sample
+  std::vector<Vec3> samples;                    // where they were
+  const SurfaceDomain* surface = nullptr;
+  double reach = 0;
+  std::uint32_t next_stamp = 1;
+  bool valid = false;  // all the above describe the last mesh
+};
+
+RestrictedDelaunayReuse::RestrictedDelaunayReuse()
+    : state_(std::make_unique<detail::RestrictedDelaunayState>()) {}
+RestrictedDelaunayReuse::~RestrictedDelaunayReuse() = default;
+RestrictedDelaunayReuse::RestrictedDelaunayReuse(RestrictedDelaunayReuse&&) noexcept = default;
+RestrictedDelaunayReuse& RestrictedDelaunayReuse::operator=(RestrictedDelaunayReuse&&) noexcept =
+    default;
 
 SurfaceMesh restricted_delaunay(const std::vector<Vec3>& samples, const SurfaceDomain& surface) {
   return restricted_delaunay(samples, surface, std::vector<std::uint32_t>(samples.size(), kAnyPatch), {});
@@ -738,6 +786,11 @@ SurfaceMesh restricted_delaunay(const std::vector<Vec3>& samples, const SurfaceD
 
 SurfaceMesh restricted_delaunay(const SurfacePacking& packing, Coverage coverage,
                                 unsigned threads) {
+  return restricted_delaunay(packing, coverage, threads, nullptr);
+}
+
+SurfaceMesh restricted_delaunay(const SurfacePacking& packing, Coverage coverage, unsigned threads,
+                                RestrictedDelaunayReuse* reuse) {
   std::vector<Vec3> samples;
   std::vector<std::uint32_t> patch;
   for (const DiskId id : packing.ids()) {
@@ -748,7 +801,8 @@ SurfaceMesh restricted_delaunay(const SurfacePacking& packing, Coverage coverage
   const auto along_features = detail::feature_neighbours(packing);
   SurfaceMesh mesh = detail::restricted_delaunay(
       samples, packing.domain(), patch, along_features, detail::DualArithmetic::filtered, nullptr,
-      coverage == Coverage::maximal ? packing.max_radius() : 0, threads);
+      coverage == Coverage::maximal ? packing.max_radius() : 0, threads,
+      reuse ? reuse->state_.get() : nullptr);
   // The feature curves' consecutive disks that the mesh joins.
   std::set<std::pair<std::uint32_t, std::uint32_t>> edges;
   for (const auto& t : mesh.triangles)
@@ -769,7 +823,8 @@ SurfaceMesh detail::restricted_delaunay(
     const std::vector<Vec3>& samples, const SurfaceDomain& surface,
     const std::vector<std::uint32_t>& sample_patch,
     const std::vector<std::array<std::uint32_t, 2>>& feature_edges, DualArithmetic arithmetic,
-    DualEdgeCounts* counts, double covered_within, unsigned threads) {
+    DualEdgeCounts* counts, double covered_within, unsigned threads,
+    RestrictedDelaunayState* state) {
   check_samples(samples);
   if (sample_patch.size() != samples.size()) {
     throw InvalidInput("restricted_delaunay: " + std::to_string(sample_patch.size()) + " patches for " +
@@ -787,8 +842,38 @@ SurfaceMesh detail::restricted_delaunay(
                          " is not a pair of two of the " + std::to_string(samples.size()) + " samples");
     }
   }
-  const auto distinct = distinct_samples(samples);
-  Delaunay dt(distinct.begin(), distinct.end());
+  // The triangulation: the last call's with the moved samples moved, where this one
+  // meshes the same surface with the same reach and few samples moved; else built anew.
+  RestrictedDelaunayState local;
+  RestrictedDelaunayState& st = state ? *state : local;
+  std::vector<std::uint32_t> moved;
+  bool reuse = st.valid && st.surface == &surface && st.reach == covered_within &&
+               st.samples.size() == samples.size() && arithmetic == DualArithmetic::filtered;
+  for (std::size_t i = 0; reuse && i < samples.size(); ++i) {
+    if (!(samples[i] == st.samples[i])) moved.push_back(static_cast<std::uint32_t>(i));
+    reuse = moved.size() <= samples.size() / 8;  // beyond that a new one is cheaper
+  }
+  st.valid = false;  // until this call has finished
+  for (const std::uint32_t i : moved) {
+    const Delaunay::Vertex_handle v = st.dt.move(st.vertex[i], point(samples[i]));
+    if (v != st.vertex[i]) {  // it landed on another sample: start afresh
+      reuse = false;
+      break;
+    }
+    // Its cells are new, or moved with it where CGAL could move it in place: their
+    // verdicts, and (by their stamps) those of the facets facing them, lapse.
+    std::vector<Delaunay::Cell_handle> around;
+    st.dt.incident_cells(v, std::back_inserter(around));
+    for (const Delaunay::Cell_handle c : around) c->info() = CellInfo{};
+  }
+  if (!reuse) {
+    const auto distinct = distinct_samples(samples);
+    st.dt = Delaunay(distinct.begin(), distinct.end());
+    st.vertex.assign(samples.size(), Delaunay::Vertex_handle());
+    for (auto v = st.dt.finite_vertices_begin(); v != st.dt.finite_vertices_end(); ++v)
+      st.vertex[v->info()] = v;
+  }
+  Delaunay& dt = st.dt;
   if (dt.dimension() < 2) {
     throw InvalidInput("restricted_delaunay: the " + std::to_string(samples.size()) +
                        " samples lie on one line; sample the whole surface");
@@ -833,8 +918,13 @@ SurfaceMesh detail::restricted_delaunay(
       keep(*f, hits, mesh.triangles);
     }
   } else {
+    // Stamps for the cells made since the last call; a facet whose two cells kept theirs
+    // keeps its verdict (its dual edge, and the samples near its corners, are the same).
+    for (auto c = dt.all_cells_begin(); c != dt.all_cells_end(); ++c)
+      if (c->info().stamp == 0) c->info().stamp = st.next_stamp++;
     // The facets in chunks on the threads, each with its own scratch; the kept triangles
-    // are sorted below, so the mesh is the same for any number of threads.
+    // are sorted below, so the mesh is the same for any number of threads. A facet's
+    // verdict is written into the cell it is seen from, by its thread alone.
     const std::vector<Delaunay::Facet> facets(dt.finite_facets_begin(), dt.finite_facets_end());
     constexpr std::size_t kChunk = 2048;
     const std::size_t chunks = (facets.size() + kChunk - 1) / kChunk;
@@ -843,8 +933,21 @@ SurfaceMesh detail::restricted_delaunay(
     std::vector<std::vector<std::array<std::uint32_t, 3>>> kept(chunks);
     parallel_for(chunks, threads, [&](std::size_t chunk, unsigned thread) {
       for (std::size_t i = chunk * kChunk; i < std::min(facets.size(), (chunk + 1) * kChunk); ++i) {
-        duals.hits(facets[i], hits[thread], scratch[thread]);
-        keep(facets[i], hits[thread], kept[chunk]);
+        const Delaunay::Facet& f = facets[i];
+        std::array<std::uint32_t, 3> t = sorted_corners(f);
+        if (const std::uint8_t verdict = reuse ? known_verdict(f) : 0) {
+          if (verdict == 3) std::swap(t[1], t[2]);
+          if (verdict >= 2) kept[chunk].push_back(t);
+          continue;
+        }
+        duals.hits(f, hits[thread], scratch[thread]);
+        const std::size_t before = kept[chunk].size();
+        keep(f, hits[thread], kept[chunk]);
+        CellInfo& info = f.first->info();
+        info.verdict[f.second] = kept[chunk].size() == before    ? 1
+                                 : kept[chunk].back()[1] == t[1] ? 2
+                                                                 : 3;
+        info.across[f.second] = f.first->neighbor(f.second)->info().stamp;
       }
     });
     for (const auto& part : kept)
@@ -856,6 +959,14 @@ SurfaceMesh detail::restricted_delaunay(
         counts->rational += one.counts.rational;
       }
     }
+  }
+  // Kept for the next call: a 3D triangulation holding every sample (no repeats).
+  if (dt.dimension() == 3 && std::all_of(st.vertex.begin(), st.vertex.end(),
+                                         [](Delaunay::Vertex_handle v) { return v != nullptr; })) {
+    st.samples = samples;
+    st.surface = &surface;
+    st.reach = covered_within;
+    st.valid = true;
   }
   cap_fans_across_creases(mesh, feature_edges);
   drop_crossings(mesh, sample_patch);
