@@ -171,7 +171,7 @@ int run_surface_tune(const TuneJob& job) {
       [&](const TuneOptions& options) { return tune(packing, job.target, rng, options); },
       job.output, write_output);
   const double spacing = relax_spacing(packing.size(), domain.unit);
-  relax(packing, spacing, job.relax_sweeps, rng, {}, job.threads);
+  relax(packing, spacing, job.relax_sweeps, rng, {}, job.threads, Maximality::at_end);
   const double seconds = seconds_since(t0);
 
   if (!job.output.empty()) write_output();
