@@ -240,8 +240,9 @@ TEST(RestrictedDelaunay, MeshingAgainFromTheLastMeshGivesTheNewMesh) {
     SurfacePacking p = sample_mps(shared, SurfaceSizing::constant(r), rng);
     relax(p, 1.28, 10, rng, {}, 2);
     std::size_t step = 0;
+    const std::string surface_name = name;  // (lambdas cannot capture bindings in C++17)
     const auto same = [&](Coverage coverage, unsigned threads) {
-      const std::string what = std::string(name) + ", step " + std::to_string(++step);
+      const std::string what = surface_name + ", step " + std::to_string(++step);
       const SurfaceMesh fresh = restricted_delaunay(p, coverage, threads);
       const SurfaceMesh again = restricted_delaunay(p, coverage, threads, &reuse);
       ASSERT_GT(fresh.triangles.size(), p.size()) << what;
