@@ -258,23 +258,16 @@ bool close_voids(SurfacePacking& packing, unsigned threads, std::size_t& moved) 
       // Steps of a tenth of a radius first, then smaller ones (most voids are slivers,
       // and a disk held on all sides may still have room for a hair).
       constexpr double kDegree = 3.14159265358979323846 / 180;
-      bool closed = false;
-      for (const double angle : {0.0, 25 * kDegree, -25 * kDegree, 50 * kDegree, -50 * kDegree}) {
-        for (const double share : {0.9, 0.99, 0.999}) {
-          for (const auto& [d2, q] : near) {
-            const double d = std::sqrt(d2), inside = share * packing.radius(q);
-            if (d <= inside) {
-              closed = true;  // covered by a move made since the scan
-            } else if (pull(q, d, inside, angle)) {
-              ++moved;
-              closed = true;
+      const auto close_one = [&] {
+        for (const double angle : {0.0, 25 * kDegree, -25 * kDegree, 50 * kDegree, -50 * kDegree})
+          for (const double share : {0.9, 0.99, 0.999})
+            for (const auto& [d2, q] : near) {
+              const double d = std::sqrt(d2), inside = share * packing.radius(q);
+              if (d <= inside) return;  // covered by a move made since the scan
+              if (pull(q, d, inside, angle)) return void(++moved);
             }
-            if (closed) break;
-          }
-          if (closed) break;
-        }
-        if (closed) break;
-      }
+      };
+      close_one();
     }
   }
 }
