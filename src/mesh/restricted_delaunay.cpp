@@ -385,6 +385,41 @@ struct NearSegment {
 /// same polynomials in an exact ring where an interval holds zero (the slivers); and
 /// rational constructions where even that meets a zero (a circumcenter on a triangle's
 /// plane or edge, four cospherical samples).
+// The surface's triangles as CGAL's, their boxes, their AABB tree and a ball around
+// them: made once per surface (a kept triangulation keeps them too: remesh's later meshes
+// of the elephant at 10^4 samples spent a fifth of their time making them again).
+struct SurfaceSearch {
+  explicit SurfaceSearch(const SurfaceDomain& surface)
+      : vertices(surface.vertices()), corners(surface.triangles()) {
+    for (const auto& t : corners)
+      triangles.emplace_back(point(vertices[t[0]]), point(vertices[t[1]]), point(vertices[t[2]]));
+    for (const auto& t : triangles) boxes.push_back(t.bbox());
+    tree.insert(triangles.begin(), triangles.end());
+    tree.build();
+    const CGAL::Bbox_3 box = tree.bbox();
+    ball_center = {(box.xmin() + box.xmax()) / 2, (box.ymin() + box.ymax()) / 2,
+                   (box.zmin() + box.zmax()) / 2};
+    ball_radius =
+        1.001 *
+        norm(Vec3{box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin()}) / 2;
+    scale = 1 + std::hypot(ball_center[0], ball_center[1], ball_center[2]) + ball_radius;
+  }
+  SurfaceSearch(const SurfaceSearch&) = delete;  // the tree points into `triangles`
+  SurfaceSearch& operator=(const SurfaceSearch&) = delete;
+  /// Made from this surface's vertices and triangles.
+  bool of(const SurfaceDomain& surface) const {
+    return surface.vertices() == vertices && surface.triangles() == corners;
+  }
+
+  std::vector<Vec3> vertices;
+  std::vector<std::array<std::size_t, 3>> corners;
+  TriangleList triangles;           // every surface triangle, in order (zero-area ones too)
+  std::vector<CGAL::Bbox_3> boxes;  // their bounding boxes
+  Tree tree;
+  std::array<double, 3> ball_center{};
+  double ball_radius = 0, scale = 1;
+};
+
 class DualEdges {
  public:
   /// `reach` > 0: every point of the surface lies within it of a sample, so a point of
@@ -392,32 +427,55 @@ class DualEdges {
   /// nearer) lies within it of the facet's corners; only that part of the edge is searched.
   /// The searches that follow may run on several threads, each with its own Scratch;
   /// `threads` find the triangles near each sample here.
+  /// `tested`: the facets whose duals will be asked about (hits), where not all: only
+  /// their cells' circumcenters and their corners' triangles are made.
   DualEdges(const Delaunay& dt, const std::vector<Vec3>& samples, const SurfaceDomain& surface,
-            detail::DualArithmetic arithmetic, double reach, unsigned threads)
-      : dt_(dt), samples_(samples), surface_(surface), arithmetic_(arithmetic), reach_(reach) {
-    const std::vector<Vec3>& v = surface.vertices();
-    for (const auto& t : surface.triangles()) triangles_.emplace_back(point(v[t[0]]), point(v[t[1]]), point(v[t[2]]));
-    for (const auto& t : triangles_) boxes_.push_back(t.bbox());
-    tree_.insert(triangles_.begin(), triangles_.end());
-    tree_.build();
-    // A ball around the surface: a ray's part beyond it meets nothing.
-    const CGAL::Bbox_3 box = tree_.bbox();
-    ball_center_ = {(box.xmin() + box.xmax()) / 2, (box.ymin() + box.ymax()) / 2, (box.zmin() + box.zmax()) / 2};
-    ball_radius_ = 1.001 * norm(Vec3{box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin()}) / 2;
-    scale_ = 1 + std::hypot(ball_center_[0], ball_center_[1], ball_center_[2]) + ball_radius_;
-    std::uint32_t index = 0;
-    for (auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c)
-      c->info().index = index++;
-    if (arithmetic == detail::DualArithmetic::filtered) {
-      [[maybe_unused]] const RoundingFor<Interval> rounding;
-      interval_centers_.reserve(index);
-      interval_boxes_.reserve(index);
-      for (auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c) {
-        interval_centers_.push_back(detail::circumcenter<Interval>(at(c, 0), at(c, 1), at(c, 2), at(c, 3)));
-        interval_boxes_.push_back(box_of(interval_centers_.back()));
+            const SurfaceSearch& search, detail::DualArithmetic arithmetic, double reach,
+            unsigned threads, const std::vector<Delaunay::Facet>* tested = nullptr)
+      : dt_(dt),
+        samples_(samples),
+        surface_(surface),
+        arithmetic_(arithmetic),
+        reach_(reach),
+        triangles_(search.triangles),
+        boxes_(search.boxes),
+        tree_(search.tree),
+        ball_center_(search.ball_center),
+        ball_radius_(search.ball_radius),
+        scale_(search.scale) {
+    std::vector<Delaunay::Cell_handle> cells;
+    for (auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c) {
+      c->info().index = static_cast<std::uint32_t>(cells.size());
+      cells.push_back(c);
+    }
+    // The cells and corner samples the tested facets need; all without a list.
+    std::vector<char> cell_needed(cells.size(), tested == nullptr),
+        sample_needed(samples.size(), tested == nullptr);
+    if (tested) {
+      for (const Delaunay::Facet& f : *tested) {
+        const Ends e = ends(f);
+        cell_needed[e.cell->info().index] = 1;
+        if (!dt.is_infinite(e.other)) cell_needed[e.other->info().index] = 1;
+        sample_needed[e.cell->vertex((e.facet + 1) & 3)->info()] = 1;
       }
     }
-    if (reach_ > 0) find_triangles_near_samples(threads);
+    if (arithmetic == detail::DualArithmetic::filtered) {
+      interval_centers_.resize(cells.size());
+      interval_boxes_.resize(cells.size());
+      detail::parallel_for(
+          (cells.size() + kChunk - 1) / kChunk, threads, [&](std::size_t chunk, unsigned) {
+            [[maybe_unused]] const RoundingFor<Interval> rounding;
+            for (std::size_t i = chunk * kChunk; i < std::min(cells.size(), (chunk + 1) * kChunk);
+                 ++i) {
+              if (!cell_needed[i]) continue;
+              const Delaunay::Cell_handle c = cells[i];
+              interval_centers_[i] =
+                  detail::circumcenter<Interval>(at(c, 0), at(c, 1), at(c, 2), at(c, 3));
+              interval_boxes_[i] = box_of(interval_centers_[i]);
+            }
+          });
+    }
+    if (reach_ > 0) find_triangles_near_samples(threads, sample_needed);
   }
 
   /// What one thread's searches need of their own: caches of exact centers, the exact
@@ -620,11 +678,12 @@ class DualEdges {
   /// For each sample, the surface triangles whose boxes come within 1.5 reach (plus the
   /// largest pad an interval search allows) of it: a crossing of a dual edge of a facet
   /// at the sample lies within reach of it, so these hold every triangle it can be on.
-  void find_triangles_near_samples(unsigned threads) {
+  void find_triangles_near_samples(unsigned threads, const std::vector<char>& needed) {
     near_sample_.resize(samples_.size());
     std::vector<std::vector<std::size_t>> found(threads);
     const double w = 1.5 * reach_ * (1 + 1e-6) + 2e-3 * ball_radius_ + 1e-14 * scale_;
     detail::parallel_for(samples_.size(), threads, [&](std::size_t i, unsigned thread) {
+      if (!needed[i]) return;
       const Vec3 c = samples_[i];
       NearSegment box{{c.x, c.y, c.z}, {0, 0, 0}, w, triangles_.begin(), &found[thread]};
       found[thread].clear();
@@ -731,13 +790,14 @@ class DualEdges {
   const SurfaceDomain& surface_;
   detail::DualArithmetic arithmetic_;
   double reach_;            // 0: the samples' coverage is not known
-  TriangleList triangles_;  // every surface triangle, in order (zero-area ones too)
-  std::vector<CGAL::Bbox_3> boxes_;                      // their bounding boxes
+  static constexpr std::size_t kChunk = 1024;
+  const TriangleList& triangles_;  // SurfaceSearch's
+  const std::vector<CGAL::Bbox_3>& boxes_;
+  const Tree& tree_;
+  std::array<double, 3> ball_center_;  // a ray's part beyond this ball meets nothing
+  double ball_radius_, scale_;
   std::vector<std::vector<std::uint32_t>>
       near_sample_;  // with a reach: find_triangles_near_samples
-  Tree tree_;
-  std::array<double, 3> ball_center_{};
-  double ball_radius_ = 0, scale_ = 1;
   std::vector<detail::HomogeneousPoint<Interval>> interval_centers_;
   std::vector<PointBox> interval_boxes_;
 };
@@ -768,6 +828,7 @@ struct detail::RestrictedDelaunayState {
   std::vector<Delaunay::Vertex_handle> vertex;  // of each sample
   std::vector<Vec3> samples;                    // where they were
   const SurfaceDomain* surface = nullptr;
+  std::shared_ptr<const SurfaceSearch> search;  // of the last surface (kept though not valid)
   double reach = 0;
   std::uint32_t next_stamp = 1;
   bool valid = false;  // all the above describe the last mesh
@@ -846,8 +907,10 @@ SurfaceMesh detail::restricted_delaunay(
   // meshes the same surface with the same reach and few samples moved; else built anew.
   RestrictedDelaunayState local;
   RestrictedDelaunayState& st = state ? *state : local;
+  const bool same_surface = st.search && st.search->of(surface);
+  if (!same_surface) st.search = std::make_shared<const SurfaceSearch>(surface);
   std::vector<std::uint32_t> moved;
-  bool reuse = st.valid && st.surface == &surface && st.reach == covered_within &&
+  bool reuse = st.valid && same_surface && st.surface == &surface && st.reach == covered_within &&
                st.samples.size() == samples.size() && arithmetic == DualArithmetic::filtered;
   for (std::size_t i = 0; reuse && i < samples.size(); ++i) {
     if (!(samples[i] == st.samples[i])) moved.push_back(static_cast<std::uint32_t>(i));
@@ -879,7 +942,20 @@ SurfaceMesh detail::restricted_delaunay(
                        " samples lie on one line; sample the whole surface");
   }
   threads = thread_count(threads);
-  DualEdges duals(dt, samples, surface, arithmetic, covered_within, threads);
+  // Stamps for the cells made since the last call; a facet whose two cells kept theirs
+  // keeps its verdict (its dual edge, and the samples near its corners, are the same):
+  // only the others are tested.
+  std::vector<Delaunay::Facet> facets, tested;
+  if (dt.dimension() == 3) {
+    for (auto c = dt.all_cells_begin(); c != dt.all_cells_end(); ++c)
+      if (c->info().stamp == 0) c->info().stamp = st.next_stamp++;
+    facets.assign(dt.finite_facets_begin(), dt.finite_facets_end());
+    if (reuse)
+      for (const Delaunay::Facet& f : facets)
+        if (known_verdict(f) == 0) tested.push_back(f);
+  }
+  DualEdges duals(dt, samples, surface, *st.search, arithmetic, covered_within, threads,
+                  reuse ? &tested : nullptr);
   const std::vector<Vec3>& sv = surface.vertices();
   SurfaceMesh mesh;
   mesh.vertices = samples;
@@ -918,14 +994,9 @@ SurfaceMesh detail::restricted_delaunay(
       keep(*f, hits, mesh.triangles);
     }
   } else {
-    // Stamps for the cells made since the last call; a facet whose two cells kept theirs
-    // keeps its verdict (its dual edge, and the samples near its corners, are the same).
-    for (auto c = dt.all_cells_begin(); c != dt.all_cells_end(); ++c)
-      if (c->info().stamp == 0) c->info().stamp = st.next_stamp++;
     // The facets in chunks on the threads, each with its own scratch; the kept triangles
     // are sorted below, so the mesh is the same for any number of threads. A facet's
     // verdict is written into the cell it is seen from, by its thread alone.
-    const std::vector<Delaunay::Facet> facets(dt.finite_facets_begin(), dt.finite_facets_end());
     constexpr std::size_t kChunk = 2048;
     const std::size_t chunks = (facets.size() + kChunk - 1) / kChunk;
     std::vector<DualEdges::Scratch> scratch(threads);
