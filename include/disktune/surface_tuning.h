@@ -75,13 +75,22 @@ std::size_t relax(SurfacePacking& packing, double spacing, int sweeps, Rng& rng,
                   Maximality maximality = Maximality::every_move);
 /// For each angle above 90 degrees in `mesh` (the packing's restricted Delaunay mesh,
 /// vertex i its i-th live disk), moves the free disk at it radially away from the
-/// midpoint of the opposite edge, to just outside the circle with that edge as diameter
-/// (or half, or a quarter of the way), where the packing stays conflict-free and
-/// maximal; where that disk is fixed or has no room, moves one of the other two toward
-/// the far side instead, until the angle is just under 90 degrees. Mesh the packing
-/// again after it. Returns how many disks moved; throws
-/// InvalidInput when the mesh's vertex count is not the packing's.
+/// midpoint of the opposite edge, outside the circle with that edge as diameter (the
+/// angle there 87 degrees; or half, or a quarter of the way), where the packing stays
+/// conflict-free and maximal; where that disk is fixed or has no room, moves one of the
+/// other two toward the far side instead, until the angle is just under 90 degrees. Mesh
+/// the packing again after it. Returns how many disks moved; throws InvalidInput when
+/// the mesh's vertex count is not the packing's.
 std::size_t open_obtuse_angles(SurfacePacking& packing, const SurfaceMesh& mesh);
+
+/// For each angle below `degrees` in `mesh` (as open_obtuse_angles takes it), moves the
+/// free disk at it toward the midpoint of the opposite edge, to where the angle would be
+/// two degrees above `degrees` (or half, or a quarter of the way), where the packing
+/// stays conflict-free and maximal; where that disk is fixed or has no room, moves one
+/// of the edge's ends away from the other instead. Mesh the packing again after it.
+/// Returns how many disks moved; throws InvalidInput when the mesh's vertex count is not
+/// the packing's, or `degrees` is not in (0, 60).
+std::size_t open_sharp_angles(SurfacePacking& packing, const SurfaceMesh& mesh, double degrees);
 
 /// Crystal growth on the surface (one radius only): a crystal of frozen disks at spacing
 /// r (injection) or sqrt(3) r (ejection) grows over the surface, its sites the points at
