@@ -4,18 +4,20 @@
 // then by 1D darts into what is left uncovered of the fixed curves), then darts by area over the surface and over ever
 // smaller cells around the uncovered part, then each remaining void gets a disk at a
 // uniform point of it (never at its vertices, which would bias the spacing).
+#include "surface_mps.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
 #include <map>
 
+#include "../voids/final_check.h"
 #include "curve_layout.h"
 #include "disktune/errors.h"
 #include "disktune/surface_sampling.h"
 #include "disktune/surface_voids.h"
 #include "disktune/tolerance.h"
-#include "../voids/final_check.h"
 
 namespace disktune {
 namespace {
@@ -382,7 +384,8 @@ void fill_sliver(SurfacePacking& packing, const Cells& cells, const Cell& c, Rng
 
 }  // namespace
 
-SurfacePacking sample_mps(std::shared_ptr<const SurfaceDomain> domain, const SurfaceSizing& sizing, Rng& rng) {
+SurfacePacking detail::sample_mps_unchecked(std::shared_ptr<const SurfaceDomain> domain,
+                                            const SurfaceSizing& sizing, Rng& rng) {
   SurfacePacking packing(std::move(domain), sizing);
   sample_corners(packing);
   lay_out_curves(packing, rng);
@@ -417,6 +420,12 @@ SurfacePacking sample_mps(std::shared_ptr<const SurfaceDomain> domain, const Sur
       if (!packing.conflicts(q)) packing.insert(q);
     }
   }
+  return packing;
+}
+
+SurfacePacking sample_mps(std::shared_ptr<const SurfaceDomain> domain, const SurfaceSizing& sizing,
+                          Rng& rng) {
+  SurfacePacking packing = detail::sample_mps_unchecked(std::move(domain), sizing, rng);
   detail::check_sample(packing);
   return packing;
 }

@@ -9,6 +9,7 @@
 #include <chrono>
 #include <cmath>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -178,11 +179,12 @@ void check_tuned(P& packing, const P& entry, const P& before_last, Phase last) {
 /// Runs the phases in order until the count is `goal` or none makes progress; `unit` is
 /// the count at area fraction 1, `after_op(packing)` (if set) runs after each operation.
 /// `entry` is the packing as tune got it (valid, before any boundary step); the result
-/// is checked by check_tuned.
+/// is checked by check_tuned unless `final_check` is false (the caller checks it later).
 template <class P, class AfterOp>
-TuneResult run_phases(P& packing, const P& entry, double unit, std::size_t goal, const std::vector<PhasePlan<P>>& plans,
-                      Rng& rng, const TuneOptions& options, const AfterOp& after_op,
-                      std::chrono::steady_clock::time_point t0) {
+TuneResult run_phases(P& packing, const P& entry, double unit, std::size_t goal,
+                      const std::vector<PhasePlan<P>>& plans, Rng& rng, const TuneOptions& options,
+                      const AfterOp& after_op, std::chrono::steady_clock::time_point t0,
+                      bool final_check = true) {
   TuneResult result;
   result.target = goal;
   const bool eject = result.target < packing.size();
@@ -234,12 +236,14 @@ TuneResult run_phases(P& packing, const P& entry, double unit, std::size_t goal,
   using Clock = std::chrono::steady_clock;
   const auto since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
   const auto first_copy = Clock::now();
-  P before_phase = packing;  // kept for check_tuned
+  std::optional<P> before_phase;  // kept for check_tuned
+  if (final_check) before_phase = packing;
   double check_seconds = since(first_copy);
   for (const PhasePlan<P>& plan : plans) {
     if (missing() == 0) break;
     const auto copy_start = Clock::now();
-    if (result.last_phase != Phase::none) before_phase = packing;
+    if (final_check && result.last_phase != Phase::none)
+      before_phase = packing;  // a copy, in place
     check_seconds += since(copy_start);
     result.last_phase = plan.phase;
     phase_goal = eject || plan.until >= 1
@@ -272,7 +276,7 @@ TuneResult run_phases(P& packing, const P& entry, double unit, std::size_t goal,
     }
   }
   const auto check_start = Clock::now();
-  check_tuned(packing, entry, before_phase, result.last_phase);
+  if (final_check) check_tuned(packing, entry, *before_phase, result.last_phase);
   result.check_seconds = check_seconds + since(check_start);
   result.count = packing.size();
   result.reached = result.count == result.target;

@@ -7,6 +7,7 @@
 #include "disktune/errors.h"
 #include "disktune/surface_tuning.h"
 #include "phase_loop.h"
+#include "surface_tune.h"
 #include "transaction.h"
 
 namespace disktune {
@@ -16,6 +17,11 @@ std::size_t target_count(const Target& target, const SurfacePacking& packing) {
 }
 
 TuneResult tune(SurfacePacking& packing, const Target& target, Rng& rng, const TuneOptions& options) {
+  return detail::tune_surface(packing, target, rng, options, true);
+}
+
+TuneResult detail::tune_surface(SurfacePacking& packing, const Target& target, Rng& rng,
+                                const TuneOptions& options, bool final_check) {
   const auto t0 = std::chrono::steady_clock::now();
   if (packing.empty()) throw InvalidInput("tune: the packing is empty; sample the surface first");
   const double unit = density_unit(packing);  // the sizing's alone: it stays as disks change
@@ -34,7 +40,8 @@ TuneResult tune(SurfacePacking& packing, const Target& target, Rng& rng, const T
     respace_surface_boundary(packing, 1 / relative_radius_for(eta), rng);
     if (budget.passed(packing.size(), goal)) packing = entry;
     if (options.after_surface_operation) options.after_surface_operation(packing);
-    return detail::run_phases(packing, entry, unit, goal, plans, rng, options, options.after_surface_operation, t0);
+    return detail::run_phases(packing, entry, unit, goal, plans, rng, options,
+                              options.after_surface_operation, t0, final_check);
   });
 }
 

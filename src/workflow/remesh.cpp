@@ -8,6 +8,11 @@
 #include <string>
 #include <vector>
 
+#include "../domain/thickness_limits.h"
+#include "../io/number_text.h"
+#include "../sampling/surface_mps.h"
+#include "../tuning/surface_tune.h"
+#include "../voids/final_check.h"
 #include "disktune/density.h"
 #include "disktune/errors.h"
 #include "disktune/resources.h"
@@ -16,8 +21,6 @@
 #include "disktune/surface_features.h"
 #include "disktune/surface_sizing.h"
 #include "disktune/surface_tuning.h"
-#include "../domain/thickness_limits.h"
-#include "../io/number_text.h"
 
 namespace disktune {
 namespace {
@@ -76,7 +79,8 @@ std::optional<RemeshResult> remesh_at(const std::shared_ptr<const SurfaceDomain>
   }
   out.sizing = sizing_at(out.radius);
   Rng rng(options.seed);
-  SurfacePacking packing = sample_mps(surface, out.sizing, rng);
+  // The sample and the tuned packing are checked once, at the end (below).
+  SurfacePacking packing = detail::sample_mps_unchecked(surface, out.sizing, rng);
   // Disks fixed on features and boundaries, and the smaller disks of thin parts, can make
   // the sample denser than asked, and then more than the count. A few more (at most one
   // in 32) are ejected: mesh_with_border at 10^4 and 3·10^4 vertices, seeds 1-3, samples
@@ -87,15 +91,18 @@ std::optional<RemeshResult> remesh_at(const std::shared_ptr<const SurfaceDomain>
   // more than one try.
   bool reached = false;
   if (packing.size() > vertex_count && packing.size() <= vertex_count + vertex_count / 32) {
-    out.tuning = tune(packing, Target::count(vertex_count), rng, options.tune);
+    out.tuning =
+        detail::tune_surface(packing, Target::count(vertex_count), rng, options.tune, false);
     reached = out.tuning.reached;
   }
   for (int retry = 0; !reached && retry < 12 && packing.size() > vertex_count; ++retry) {
     out.radius *= std::sqrt(1.03 * static_cast<double>(packing.size()) / static_cast<double>(vertex_count));
     out.sizing = sizing_at(out.radius);
-    packing = sample_mps(surface, out.sizing, rng);
+    packing = detail::sample_mps_unchecked(surface, out.sizing, rng);
   }
-  if (!reached) out.tuning = tune(packing, Target::count(vertex_count), rng, options.tune);
+  if (!reached)
+    out.tuning =
+        detail::tune_surface(packing, Target::count(vertex_count), rng, options.tune, false);
   // The rest length of the springs: the hexagonal spacing of the count reached.
   const double eta = static_cast<double>(packing.size()) / density_unit(packing);
   const double spacing = 1 / relative_radius_for(eta);
@@ -128,6 +135,12 @@ std::optional<RemeshResult> remesh_at(const std::shared_ptr<const SurfaceDomain>
     moved += open_sharp_angles(packing, out.mesh, kSharpAngle);
     if (moved == 0) break;
     out.mesh = restricted_delaunay(packing, Coverage::maximal, options.threads, &reuse);
+  }
+  // The last line of defence, for the sample, tune and every move since.
+  const std::string defect = packing_defect(packing);
+  if (!defect.empty()) {
+    throw InternalError("remesh: the packing of the new mesh's vertices failed the final check: " +
+                        defect + ". " + detail::kReportBug);
   }
   out.check = check_surface_mesh(out.mesh);
   // The check advises a sampler's user; remesh's denser samples are more vertices.
