@@ -7,10 +7,11 @@
 // same for any number of threads.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
-#include <map>
 #include <tuple>
+#include <unordered_map>
 #include <vector>
 
 #include "../geometry/threads.h"
@@ -27,16 +28,36 @@ using ColourBlocks = std::array<std::vector<std::vector<DiskId>>, 8>;
 inline ColourBlocks colour_blocks(const SurfacePacking& packing, const std::vector<DiskId>& order,
                                   double block, Vec3 origin) {
   using Cube = std::tuple<std::int64_t, std::int64_t, std::int64_t>;
-  std::map<Cube, std::vector<DiskId>> cubes;
+  struct CubeHash {
+    std::size_t operator()(const Cube& c) const {
+      const auto [i, j, k] = c;
+      return static_cast<std::size_t>((static_cast<std::uint64_t>(i) * 0x9E3779B97F4A7C15ULL) ^
+                                      (static_cast<std::uint64_t>(j) * 0xC2B2AE3D27D4EB4FULL) ^
+                                      (static_cast<std::uint64_t>(k) * 0x165667B19E3779F9ULL));
+    }
+  };
+  // The groups numbered as their cubes first appear (a hash table: a sorted map's lookups
+  // were 8 % of relaxation's time on two cores), then put in the order of their cubes.
+  std::unordered_map<Cube, std::uint32_t, CubeHash> group_of;
+  group_of.reserve(order.size() / 4 + 16);
+  std::vector<Cube> cubes;
+  std::vector<std::vector<DiskId>> groups;
   const auto index = [&](double v) { return SpaceGrid::cell_index(v, block); };
   for (const DiskId p : order) {
     const Vec3 c = packing.center(p) - origin;
-    cubes[{index(c.x), index(c.y), index(c.z)}].push_back(p);
+    const Cube cube{index(c.x), index(c.y), index(c.z)};
+    const auto [at, fresh] = group_of.try_emplace(cube, static_cast<std::uint32_t>(groups.size()));
+    if (fresh) cubes.push_back(cube), groups.emplace_back();
+    groups[at->second].push_back(p);
   }
+  std::vector<std::uint32_t> by_cube(groups.size());
+  for (std::uint32_t g = 0; g < by_cube.size(); ++g) by_cube[g] = g;
+  std::sort(by_cube.begin(), by_cube.end(),
+            [&](std::uint32_t a, std::uint32_t b) { return cubes[a] < cubes[b]; });
   ColourBlocks out;
-  for (auto& [cube, disks] : cubes) {
-    const auto [i, j, k] = cube;
-    out[(i & 1) | (j & 1) << 1 | (k & 1) << 2].push_back(std::move(disks));
+  for (const std::uint32_t g : by_cube) {
+    const auto [i, j, k] = cubes[g];
+    out[(i & 1) | (j & 1) << 1 | (k & 1) << 2].push_back(std::move(groups[g]));
   }
   return out;
 }
