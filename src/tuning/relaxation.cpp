@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <string>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -399,13 +400,24 @@ std::size_t relax(SurfacePacking& packing, double spacing, int sweeps, Rng& rng,
   return *relax_in(packing, spacing, sweeps, rng, after_sweep, threads);
 }
 
-std::size_t open_obtuse_angles(SurfacePacking& packing, const SurfaceMesh& mesh) {
-  const std::vector<DiskId> ids = packing.ids();  // vertex i is the i-th live disk
+namespace {
+
+// The disk of each vertex of `mesh`, the packing's own (vertex i is the i-th live disk);
+// InvalidInput, naming `who`, where the counts differ.
+std::vector<DiskId> disks_of_vertices(const SurfacePacking& packing, const SurfaceMesh& mesh, const char* who) {
+  std::vector<DiskId> ids = packing.ids();
   if (mesh.vertices.size() != ids.size()) {
-    throw InvalidInput("open_obtuse_angles: the mesh has " + std::to_string(mesh.vertices.size()) +
+    throw InvalidInput(std::string(who) + ": the mesh has " + std::to_string(mesh.vertices.size()) +
                        " vertices, the packing " + std::to_string(ids.size()) +
                        " disks; give the packing's own mesh (restricted_delaunay)");
   }
+  return ids;
+}
+
+}  // namespace
+
+std::size_t open_obtuse_angles(SurfacePacking& packing, const SurfaceMesh& mesh) {
+  const std::vector<DiskId> ids = disks_of_vertices(packing, mesh, "open_obtuse_angles");
   // Outside the circle over ab, so that the angle at the vertex is under 90 (87 degrees):
   // remesh at 10^4 vertices, seeds 1-10, obtuse triangles left on the elephant 44 -> 40
   // and on eight.off 25 -> 20 against 1.02 times the half-edge (89 degrees), where the
@@ -446,12 +458,7 @@ std::size_t open_obtuse_angles(SurfacePacking& packing, const SurfaceMesh& mesh)
 }
 
 std::size_t open_sharp_angles(SurfacePacking& packing, const SurfaceMesh& mesh, double degrees) {
-  const std::vector<DiskId> ids = packing.ids();
-  if (mesh.vertices.size() != ids.size()) {
-    throw InvalidInput("open_sharp_angles: the mesh has " + std::to_string(mesh.vertices.size()) +
-                       " vertices, the packing " + std::to_string(ids.size()) +
-                       " disks; give the packing's own mesh (restricted_delaunay)");
-  }
+  const std::vector<DiskId> ids = disks_of_vertices(packing, mesh, "open_sharp_angles");
   if (!(degrees > 0 && degrees < 60)) {
     throw InvalidInput("open_sharp_angles: the angle must be in (0, 60) degrees, got " +
                        std::to_string(degrees));
