@@ -44,8 +44,11 @@ std::size_t attractor_eject(BasicUndoLog<P>& log, P& packing, DiskId p, Rng& rng
     log.revert_to(mark);  // no place for p: everything back
     return 0;
   }
+  const std::size_t moved = log.mark();
   log.move(p, z);
-  if (!S::void_free_near(packing, pc, r)) log.revert_to(mark);
+  // Around z too (placed_void_free); the pulls checked their own.
+  if (!S::void_free_near(packing, pc, r) || !placed_void_free(log, packing, moved))
+    log.revert_to(mark);
   return 0;
 }
 

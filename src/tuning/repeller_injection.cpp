@@ -25,9 +25,13 @@ std::size_t repel_in(P& packing, typename detail::Space<P>::Location point, doub
     detail::BasicUndoLog<P> log(packing);
     const auto to = S::point_of(voids[far]);
     log.move(q.id, to);
-    if (S::covers_all(packing, to, voids)) continue;  // no gap opened; q stays moved
+    if (S::covers_all(packing, to, voids)) {  // no gap opened; q stays moved
+      if (detail::voids_on_rim<P>(to, q.radius, voids) && !detail::placed_void_free(log, packing))
+        log.revert();
+      continue;
+    }
     const std::size_t added = S::repair_void(log, packing, q.image, reach, rng, max_added);
-    if (added > max_added) {
+    if (added > max_added || !detail::placed_void_free(log, packing)) {
       log.revert();
       return 0;
     }

@@ -48,8 +48,10 @@ std::size_t sift_in(P& packing, DiskId p, Rng& rng, std::size_t max_removed) {
     }
     log.insert(z, packing.radius_at(z));
     // Exact check of the two regions: the void points bound the void only when its arcs
-    // are short, and this does not rely on it.
-    if (S::void_free_near(packing, c, r) && S::void_free_near(packing, q.image, q.radius)) return 1;
+    // are short, and this does not rely on it; and around z (placed_void_free).
+    if (S::void_free_near(packing, c, r) && S::void_free_near(packing, q.image, q.radius) &&
+        detail::placed_void_free(log, packing))
+      return 1;
     log.revert();
   }
   return 0;

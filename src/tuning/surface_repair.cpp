@@ -149,8 +149,10 @@ void pull_toward(SurfaceUndoLog& log, SurfacePacking& packing, DiskId q, Vec3 to
   }
   if (!best) return;
   const std::size_t before = log.mark();
+  const Vec3 to_p = best->p;
   log.move(q, *best);
-  if (!void_free_near(packing, cq, rq)) log.revert_to(before);
+  // Around the new center too (placed_void_free, space.h).
+  if (!void_free_near(packing, cq, rq) || !void_free_near(packing, to_p, rq)) log.revert_to(before);
 }
 
 std::vector<DiskId> mobile_neighbors(const SurfacePacking& packing, Vec3 point, double r, DiskId self, Rng& rng) {

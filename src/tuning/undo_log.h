@@ -93,6 +93,16 @@ class BasicUndoLog {
   /// Keeps the edits: the log forgets them.
   void commit() { edits_.clear(); }
 
+  /// Calls f(id) for each disk inserted or moved since `mark` that is still there (a
+  /// disk placed twice, twice): where the operation put disks.
+  template <class F>
+  void for_each_placed(std::size_t mark, F&& f) const {
+    for (std::size_t i = mark; i < edits_.size(); ++i) {
+      const Edit& e = edits_[i];
+      if ((e.kind == Kind::insert || e.kind == Kind::move) && packing_.alive(e.id)) f(e.id);
+    }
+  }
+
  private:
   enum class Kind { insert, move, flags, remove };
   struct Edit {

@@ -20,9 +20,14 @@ std::size_t void_inject_in(P& packing, DiskId p, Rng& rng, std::size_t max_added
   const auto to = S::void_choice(packing, voids, rng);
   log.move(p, to);
   // Weighted diameter below 0: p covers its whole void from there, nothing to inject.
-  if (S::covers_all(packing, to, voids)) return 0;
+  if (S::covers_all(packing, to, voids)) {
+    if (detail::voids_on_rim<P>(to, packing.radius(p), voids) &&
+        !detail::placed_void_free(log, packing))
+      log.revert();
+    return 0;
+  }
   const std::size_t added = S::repair_void(log, packing, c, reach, rng, max_added);
-  if (added > max_added) {
+  if (added > max_added || !detail::placed_void_free(log, packing)) {
     log.revert();
     return 0;
   }
