@@ -80,6 +80,13 @@ std::vector<SurfacePoint> covering_positions(const SurfacePacking& packing, cons
   double r = packing.max_radius();
   for (const SurfaceVoidPoint& v : voids) r = std::min(r, packing.radius_at(v.at));
   const std::vector<Vec3> points = distinct_points(voids, 1e-9 * r);
+  // No disk holds two void points farther apart than its diameter (covers_all's balls
+  // are at most max_radius, with is_covered's tolerance): the common case of a pair or
+  // a pulled disk that cannot cover its void, answered before any arrangement.
+  const double span = 2 * packing.max_radius() * (1 + 2 * kRelTol);
+  for (std::size_t i = 0; i < points.size(); ++i)
+    for (std::size_t j = i + 1; j < points.size(); ++j)
+      if (squared_norm(points[i] - points[j]) > span * span) return out;
   // Only triangles within r of every void point can hold a position.
   std::vector<std::uint32_t> tris, kept;
   packing.index().triangles_near(points.front(), r, tris);
