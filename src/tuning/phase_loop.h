@@ -53,12 +53,12 @@ struct PhasePlan {
   bool thaw = false;  // unfreeze the crystal first, so its disks can move again
   // Each sweep tries only the sparsest tenth of the disks (sparsest_first), not all.
   bool sparsest = false;
-  // If set, progress is judged on every sixteenth of a sweep (of at least 256 tries):
-  // one adding or removing fewer disks than this fraction of its tries ends the phase
-  // at once. For phases
-  // whose tail the next phase does faster (a whole sweep's judgement can come a
-  // whole, slow, sweep late).
+  // A sweep's worth of tries adding or removing fewer disks than this fraction of them
+  // ends the phase (at least TuneOptions::min_gain_per_sweep): for phases whose tail
+  // the next phase does faster. With `judge_parts`, so does every sixteenth of a sweep
+  // (of at least 256 tries) at once: a whole sweep's judgement comes a slow sweep late.
   double min_gain = 0;
+  bool judge_parts = false;
 };
 
 /// The disks a sparse-first sweep tries: the tenth (at least one) with the fewest
@@ -128,15 +128,18 @@ std::vector<PhasePlan<P>> plan_for(const TuneOptions& o, bool eject, bool one_ra
   // first) thawed so that its disks can make room too.
   const Plan wide_attractor_phase{Phase::attractor_ejection, &wide_attractor_eject, nullptr, 2.0, true};
   const Plan crystal_eject_phase{Phase::crystal_ejection, nullptr, &crystal_eject, 2.0};
-  // On a curved surface the crystal after void injection adds disks faster than void
-  // injection's tail, so that ends at the first sixteenth of a sweep that gains under
-  // 2 % of its tries. The elephant at 10^5 disks (one core): void injection's sweeps
-  // from eta 0.70 added 2,600 down to 200 disks at 1.2 s each, the crystal after it
-  // 6,000 a second (tune to 1.4x the sample 23.6 -> 4.8 s). (Sifting's tail, as slow,
-  // is not cut so: ended at its second sweep's first sixteenth, the ejection phases
-  // after it stalled 4 disks short of 0.62x on eight.off.)
-  Plan quick_void_phase = void_phase;
+  // On a curved surface the phases after void injection and sifting do their tails'
+  // work faster. Void injection hands over at the first sixteenth of a sweep adding
+  // under 2 % of its tries: on the elephant at 10^5 disks (one core) its sweeps from
+  // eta 0.70 added 2,600 down to 200 disks at 1.2 s each, the crystal after it 6,000 a
+  // second (tune to 1.4x 23.6 -> 4.8 s). Sifting ends after a sweep removing under
+  // 0.1 % of its tries: there its second sweep removed 44 disks in 3.1 s, its third 1
+  // (tune to 0.7x 21.4 -> 17.0 s). (Cut at its second sweep's first sixteenth instead,
+  // the ejection phases after it stalled 4 disks short of 0.62x on eight.off.)
+  Plan quick_void_phase = void_phase, quick_sift_phase = sift_phase;
   quick_void_phase.min_gain = 0.02;
+  quick_void_phase.judge_parts = true;
+  quick_sift_phase.min_gain = 1e-3;
   auto alone = [](Plan p) { return p.until = 2.0, std::vector<Plan>{p}; };
   // Crystal steps near the exact target can all overshoot (the voids a step refills need
   // more disks than are left to add); repeller injection then adds the last few.
@@ -148,8 +151,10 @@ std::vector<PhasePlan<P>> plan_for(const TuneOptions& o, bool eject, bool one_ra
     case Method::automatic:
       if (eject) {
         if (!one_radius) return {sift_phase, attractor_phase, wide_attractor_phase};
-        return curved ? std::vector<Plan>{sift_phase, attractor_phase, wide_attractor_phase, crystal_eject_phase}
-                      : std::vector<Plan>{sift_phase, attractor_phase, crystal_eject_phase, wide_attractor_phase};
+        return curved ? std::vector<Plan>{quick_sift_phase, attractor_phase, wide_attractor_phase,
+                                          crystal_eject_phase}
+                      : std::vector<Plan>{sift_phase, attractor_phase, crystal_eject_phase,
+                                          wide_attractor_phase};
       }
       // Without crystal growth the repeller phase is the last: it runs until it stalls.
       if (!one_radius) return {void_phase, finish};
@@ -246,7 +251,7 @@ TuneResult run_phases(P& packing, const P& entry, double unit, std::size_t goal,
       plan.op(packing, order[k], rng, missing());
       if (after_op) after_op(packing);
       if (k % tick == 0) report(plan.phase);
-      if (plan.min_gain > 0 && (k + 1) % part == 0) {
+      if (plan.judge_parts && (k + 1) % part == 0) {
         const std::size_t now = packing.size();
         const double part_gain =
             static_cast<double>(now > part_start ? now - part_start : part_start - now);
@@ -297,7 +302,7 @@ TuneResult run_phases(P& packing, const P& entry, double unit, std::size_t goal,
       gain += std::abs(static_cast<double>(packing.size()) - static_cast<double>(before));
       // Judged over a whole sweep's worth of tries (one sweep, or ten sparse-first ones).
       if (tried < static_cast<double>(before)) continue;
-      if (gain < std::max(options.min_gain_per_sweep * tried, 0.5)) {
+      if (gain < std::max(std::max(options.min_gain_per_sweep, plan.min_gain) * tried, 0.5)) {
         if (!sparse) break;
         sparse = false;
       }
