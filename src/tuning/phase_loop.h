@@ -247,20 +247,20 @@ TuneResult run_phases(P& packing, const P& entry, double unit, std::size_t goal,
     const std::size_t part = std::max<std::size_t>(order.size() / 16, 256);  // at least 256 tries
     std::size_t part_start = packing.size();
     for (std::size_t k = 0; k < order.size() && missing() > 0; ++k) {
-      if (!packing.alive(order[k])) continue;
-      plan.op(packing, order[k], rng, missing());
-      if (after_op) after_op(packing);
-      if (k % tick == 0) report(plan.phase);
-      if (plan.judge_parts && (k + 1) % part == 0) {
+      if (plan.judge_parts && k > 0 && k % part == 0) {  // the part just done
         const std::size_t now = packing.size();
         const double part_gain =
             static_cast<double>(now > part_start ? now - part_start : part_start - now);
         if (part_gain < std::max(plan.min_gain * static_cast<double>(part), 0.5)) {
           stalled = true;
-          return k + 1;
+          return k;
         }
         part_start = now;
       }
+      if (!packing.alive(order[k])) continue;
+      plan.op(packing, order[k], rng, missing());
+      if (after_op) after_op(packing);
+      if (k % tick == 0) report(plan.phase);
     }
     return order.size();
   };
