@@ -55,8 +55,9 @@ struct PhasePlan {
   bool sparsest = false;
   // A sweep's worth of tries adding or removing fewer disks than this fraction of them
   // ends the phase (at least TuneOptions::min_gain_per_sweep): for phases whose tail
-  // the next phase does faster. With `judge_parts`, so does every sixteenth of a sweep
-  // (of at least 256 tries) at once: a whole sweep's judgement comes a slow sweep late.
+  // the next phase does faster. With `judge_parts`, so does each sixteenth of a sweep
+  // (of at least 256 tries) but the last, at once, as soon as it is done (the last one
+  // is left to the whole sweep's judgement): that comes a slow sweep late.
   double min_gain = 0;
   bool judge_parts = false;
 };
