@@ -22,13 +22,14 @@ std::size_t sift_in(P& packing, DiskId p, Rng& rng, std::size_t max_removed) {
   const double reach = S::void_reach(r);
   detail::BasicUndoLog<P> log(packing);
   // p alone: the others may already cover all it did.
-  if (S::voids_in(packing, c, reach, {p}).empty()) {
+  const auto own = S::voids_in(packing, c, reach, {p});
+  if (own.empty()) {
     log.remove(p);
     if (S::void_free_near(packing, c, r)) return 1;
     log.revert();
   }
   for (const auto& q : S::mobile_neighbors(packing, c, r, p, rng)) {
-    if (!packing.alive(q.id)) continue;
+    if (!packing.alive(q.id) || S::pair_too_wide(packing, own, q)) continue;
     // The void the pair leaves lies in D(p) and D(q).
     auto voids = S::voids_in(packing, c, reach, {p, q.id});
     const auto more = S::voids_in(packing, q.image, S::void_reach(q.radius), {p, q.id});

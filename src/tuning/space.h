@@ -23,6 +23,8 @@
 //   void_free_near(P, c, r)    no void within D(c, r): the exact check after a change
 //   covering_point(P, voids, near, R, rng, z)  a random place within R of `near` where
 //                    one disk covers every void point and meets no disk
+//   pair_too_wide(P, own_p, q)  no one disk can cover what lifting p (its void points
+//                    own_p) and neighbour q leaves, or false where that is not known
 //   sole_cover_point(P, voids, p, c, r, z)  where disk p alone covers the voids around
 //                    it (p's own disk ignored), or false
 //   pull_toward(log, P, q, to, passable)  moves neighbour q as close to `to` as it can
@@ -105,6 +107,11 @@ struct Space<Packing> {
   static bool covering_point(const Packing& packing, const std::vector<VoidPoint>& voids, Location /*near*/,
                              double /*R*/, Rng& rng, Point& z) {
     return detail::covering_point(packing, voids, rng, z);
+  }
+  // The darts need no such shortcut (see the surface's).
+  static bool pair_too_wide(const Packing& /*packing*/, const std::vector<VoidPoint>& /*own_p*/,
+                            const Near& /*q*/) {
+    return false;
   }
   static bool sole_cover_point(const Packing& packing, const std::vector<VoidPoint>& voids, DiskId p, Location /*c*/,
                                double /*r*/, Point& z) {
@@ -221,6 +228,13 @@ struct Space<SurfacePacking> {
   static bool covering_point(const SurfacePacking& packing, const std::vector<VoidPoint>& voids, Location near,
                              double R, Rng& rng, Point& z) {
     return detail::covering_point(packing, voids, near, R, rng, z);
+  }
+  // Lifting p and q leaves at least what each leaves alone; one scan of q's own void
+  // (against two of the pair's) tells most pairs apart (wider_than_one_disk).
+  static bool pair_too_wide(const SurfacePacking& packing, const std::vector<VoidPoint>& own_p,
+                            const Near& q) {
+    return detail::wider_than_one_disk(packing, own_p,
+                                       voids_in(packing, q.image, void_reach(q.radius), {q.id}));
   }
   static bool sole_cover_point(const SurfacePacking& packing, const std::vector<VoidPoint>& voids, DiskId p,
                                Location c, double r, Point& z) {

@@ -55,6 +55,19 @@ bool covers_lifted_voids(const SurfacePacking& packing, Vec3 c, double R, DiskId
   return void_points_near_within(packing, c, R, {p}, holding_ball(packing, x));
 }
 
+double hold_span(const SurfacePacking& packing) {
+  return 2 * packing.max_radius() * (1 + 2 * kRelTol);
+}
+
+bool wider_than_one_disk(const SurfacePacking& packing, const std::vector<SurfaceVoidPoint>& a,
+                         const std::vector<SurfaceVoidPoint>& b) {
+  const double span = hold_span(packing);
+  for (const SurfaceVoidPoint& u : a)
+    for (const SurfaceVoidPoint& v : b)
+      if (squared_norm(u.at.p - v.at.p) > span * span) return true;
+  return false;
+}
+
 namespace {
 
 // The void points once each (a crossing on an edge is found from both triangles).
@@ -80,10 +93,9 @@ std::vector<SurfacePoint> covering_positions(const SurfacePacking& packing, cons
   double r = packing.max_radius();
   for (const SurfaceVoidPoint& v : voids) r = std::min(r, packing.radius_at(v.at));
   const std::vector<Vec3> points = distinct_points(voids, 1e-9 * r);
-  // No disk holds two void points farther apart than its diameter (covers_all's balls
-  // are at most max_radius, with is_covered's tolerance): the common case of a pair or
-  // a pulled disk that cannot cover its void, answered before any arrangement.
-  const double span = 2 * packing.max_radius() * (1 + 2 * kRelTol);
+  // The common case of a pair or a pulled disk that cannot cover its void, answered
+  // before any arrangement.
+  const double span = hold_span(packing);
   for (std::size_t i = 0; i < points.size(); ++i)
     for (std::size_t j = i + 1; j < points.size(); ++j)
       if (squared_norm(points[i] - points[j]) > span * span) return out;
@@ -98,9 +110,17 @@ std::vector<SurfacePoint> covering_positions(const SurfacePacking& packing, cons
   // The feasible set is bounded by the balls around the void points and by the other
   // disks' spheres (a position must not conflict): its vertices are among those of
   // the arrangement of both.
+  // A sphere farther than a holding ball's radius from some void point has no point
+  // a position could take (covers_all fails all along it): left out, it leaves the
+  // same positions at a fraction of the pairs of circles.
   std::vector<Ball> conflict_balls;
+  const double hold = packing.max_radius() * (1 + 4 * kRelTol);
   packing.for_each_near(points.front(), r + packing.max_radius(), [&](DiskId j) {
-    if (j != self && j != passable) conflict_balls.push_back({packing.center(j), packing.radius(j) * (1 + 2 * kRelTol), j});
+    if (j == self || j == passable) return;
+    const Ball ball{packing.center(j), packing.radius(j) * (1 + 2 * kRelTol), j};
+    for (const Vec3& v : points)
+      if (squared_norm(ball.center - v) > (ball.radius + hold) * (ball.radius + hold)) return;
+    conflict_balls.push_back(ball);
   });
   std::vector<Ball> balls;
   for (const double shrink : {1.0, 0.95, 0.85, 0.7}) {

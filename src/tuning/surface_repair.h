@@ -43,6 +43,15 @@ HoldingBall holding_ball(const SurfacePacking& packing, const SurfacePoint& c);
 bool covers_lifted_voids(const SurfacePacking& packing, Vec3 c, double R, DiskId p,
                          const SurfacePoint& x, const std::vector<std::uint32_t>* near_p = nullptr);
 
+/// The widest two points one disk can hold (covers_all's balls are at most max_radius,
+/// with is_covered's tolerance): its diameter, and a hair.
+double hold_span(const SurfacePacking& packing);
+
+/// Whether a point of `a` and one of `b` lie farther apart than hold_span: then no one
+/// disk covers both sets (covering_positions finds none for their union).
+bool wider_than_one_disk(const SurfacePacking& packing, const std::vector<SurfaceVoidPoint>& a,
+                         const std::vector<SurfaceVoidPoint>& b);
+
 /// Positions within R of `near` where a disk covers every void point (covers_all) and
 /// conflicts with no disk but `self` and `passable`: the vertices of the arrangement of
 /// the balls around the void points and the other disks' spheres, cut with the triangles
