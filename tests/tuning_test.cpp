@@ -6,7 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <functional>
 #include <memory>
 #include <string>
 #include <tuple>
@@ -499,6 +501,45 @@ TEST(SparsestFirst, ARepellerPhaseOverFixedDisksOnlyEnds) {
   const TuneResult result = tune(p, box, Target::count(n + 10), rng, options);
   EXPECT_FALSE(result.reached);
   EXPECT_EQ(p.size(), n);
+}
+
+// A ranked sweep (PhasePlan::rank) tries every live disk once, in the order of the
+// ranks as they are when each disk's turn comes: here the first try raises the rank of
+// the disk ranked second above all others, and that disk then comes last.
+std::vector<double> ranks_now;
+std::vector<DiskId> tried_in_order;
+DiskId second_ranked = kNoDisk;
+
+TEST(RankedSweep, TriesEachDiskOnceInTheOrderOfItsRankWhenItsTurnComes) {
+  const PeriodicBox box;
+  Rng rng(4);
+  Packing p = sample_mps(box, 0.05, rng);
+  ASSERT_GT(p.size(), 100u);
+  ranks_now.assign(p.id_bound(), 0);
+  for (const DiskId d : p.ids()) ranks_now[d] = uniform01(rng);
+  std::vector<DiskId> by_rank = p.ids();
+  std::sort(by_rank.begin(), by_rank.end(),
+            [](DiskId a, DiskId b) { return ranks_now[a] < ranks_now[b]; });
+  second_ranked = by_rank[1];
+  tried_in_order.clear();
+  detail::PhasePlan<Packing> plan{
+      Phase::attractor_ejection,
+      [](Packing&, DiskId d, Rng&, std::size_t) -> std::size_t {
+        if (tried_in_order.empty())
+          ranks_now[second_ranked] = 1 + *std::max_element(ranks_now.begin(), ranks_now.end());
+        tried_in_order.push_back(d);
+        return 0;  // removes nothing: one sweep, then the phase has stalled
+      },
+      nullptr, 2.0};
+  plan.rank = [](const Packing&, DiskId d) { return ranks_now[d]; };
+  const TuneResult result = detail::run_phases(p, p, 1.0, p.size() - 5, {plan}, rng, TuneOptions{},
+                                               std::function<void(const Packing&)>{},
+                                               std::chrono::steady_clock::now(), false);
+  EXPECT_FALSE(result.reached);
+  std::vector<DiskId> expected = by_rank;
+  expected.erase(expected.begin() + 1);
+  expected.push_back(second_ranked);
+  EXPECT_EQ(tried_in_order, expected);
 }
 
 }  // namespace
