@@ -503,6 +503,46 @@ TEST(SparsestFirst, ARepellerPhaseOverFixedDisksOnlyEnds) {
   EXPECT_EQ(p.size(), n);
 }
 
+// Ejection goes round its phases again while a round removes disks: here the second
+// phase removes one disk and lets the first remove three more, which the first can only
+// do in a second round; a third round removes nothing, and the loop ends short of the goal.
+int first_phase_may_remove = 0;
+bool second_phase_ran = false;
+
+TEST(EjectionRounds, GoRoundAgainWhileARoundRemovesDisks) {
+  const PeriodicBox box;
+  Rng rng(6);
+  Packing p = sample_mps(box, 0.05, rng);
+  const std::size_t n = p.size();
+  first_phase_may_remove = 0;
+  second_phase_ran = false;
+  const detail::PhasePlan<Packing> first{
+      Phase::sift_ejection,
+      [](Packing& packing, DiskId d, Rng&, std::size_t) -> std::size_t {
+        if (first_phase_may_remove == 0) return 0;
+        --first_phase_may_remove;
+        packing.remove(d);
+        return 1;
+      },
+      nullptr, 2.0};
+  const detail::PhasePlan<Packing> second{
+      Phase::attractor_ejection,
+      [](Packing& packing, DiskId d, Rng&, std::size_t) -> std::size_t {
+        if (second_phase_ran) return 0;
+        second_phase_ran = true;
+        first_phase_may_remove = 3;
+        packing.remove(d);
+        return 1;
+      },
+      nullptr, 2.0};
+  const TuneResult result = detail::run_phases(p, p, 1.0, n - 10, {first, second}, rng,
+                                               TuneOptions{}, std::function<void(const Packing&)>{},
+                                               std::chrono::steady_clock::now(), false);
+  EXPECT_FALSE(result.reached);
+  EXPECT_EQ(p.size(), n - 4);
+  EXPECT_EQ(first_phase_may_remove, 0);
+}
+
 // A ranked sweep (PhasePlan::rank) tries every live disk once, in the order of the
 // ranks as they are when each disk's turn comes: here the first try raises the rank of
 // the disk ranked second above all others, and that disk then comes last.
