@@ -81,11 +81,12 @@ std::vector<Vec3> distinct_points(const std::vector<SurfaceVoidPoint>& voids, do
   return out;
 }
 
-}  // namespace
-
-std::vector<SurfacePoint> covering_positions(const SurfacePacking& packing, const std::vector<SurfaceVoidPoint>& voids,
-                                             Vec3 near, double R, DiskId self, DiskId passable,
-                                             const Vec3* toward) {
+// covering_positions, or with `clear_of_disks` false the positions that cover the void
+// points whatever disk they meet (the other disks' spheres left out of the arrangement).
+std::vector<SurfacePoint> positions(const SurfacePacking& packing,
+                                    const std::vector<SurfaceVoidPoint>& voids, Vec3 near, double R,
+                                    DiskId self, DiskId passable, const Vec3* toward,
+                                    bool clear_of_disks) {
   std::vector<SurfacePoint> out;
   if (voids.empty()) return out;
   // Balls of the smallest radius near the voids; with a sizing the true radius differs
@@ -115,13 +116,14 @@ std::vector<SurfacePoint> covering_positions(const SurfacePacking& packing, cons
   // same positions at a fraction of the pairs of circles.
   std::vector<Ball> conflict_balls;
   const double hold = packing.max_radius() * (1 + 4 * kRelTol);
-  packing.for_each_near(points.front(), r + packing.max_radius(), [&](DiskId j) {
-    if (j == self || j == passable) return;
-    const Ball ball{packing.center(j), packing.radius(j) * (1 + 2 * kRelTol), j};
-    for (const Vec3& v : points)
-      if (squared_norm(ball.center - v) > (ball.radius + hold) * (ball.radius + hold)) return;
-    conflict_balls.push_back(ball);
-  });
+  if (clear_of_disks)
+    packing.for_each_near(points.front(), r + packing.max_radius(), [&](DiskId j) {
+      if (j == self || j == passable) return;
+      const Ball ball{packing.center(j), packing.radius(j) * (1 + 2 * kRelTol), j};
+      for (const Vec3& v : points)
+        if (squared_norm(ball.center - v) > (ball.radius + hold) * (ball.radius + hold)) return;
+      conflict_balls.push_back(ball);
+    });
   std::vector<Ball> balls;
   for (const double shrink : {1.0, 0.95, 0.85, 0.7}) {
     if (shrink < 1 && packing.sizing().is_constant()) break;
@@ -130,13 +132,23 @@ std::vector<SurfacePoint> covering_positions(const SurfacePacking& packing, cons
     for (const std::uint32_t t : kept) {
       for_each_arrangement_vertex(packing.index().plane(t), balls, kRelTol * r, [&](Vec3 p, DiskId, DiskId) {
         const SurfacePoint x{p, t};
-        if (squared_norm(p - near) <= R * R && covers_all(packing, x, voids) && !packing.conflicts(x, self, passable))
+        if (squared_norm(p - near) <= R * R && covers_all(packing, x, voids) &&
+            !(clear_of_disks && packing.conflicts(x, self, passable)))
           out.push_back(x);
       }, toward);
     }
     if (!out.empty()) break;
   }
   return out;
+}
+
+}  // namespace
+
+std::vector<SurfacePoint> covering_positions(const SurfacePacking& packing,
+                                             const std::vector<SurfaceVoidPoint>& voids, Vec3 near,
+                                             double R, DiskId self, DiskId passable,
+                                             const Vec3* toward) {
+  return positions(packing, voids, near, R, self, passable, toward, true);
 }
 
 bool covering_point(const SurfacePacking& packing, const std::vector<SurfaceVoidPoint>& voids, Vec3 near, double R,
@@ -167,12 +179,31 @@ void pull_toward(SurfaceUndoLog& log, SurfacePacking& packing, DiskId q, Vec3 to
   const double rq = packing.radius(q);
   const auto voids = voids_near(packing, cq, void_reach(rq), {q});
   if (voids.empty()) return;
-  const auto spots = covering_positions(packing, voids, cq, 2 * rq, q, passable, &to);
+  const auto nearest = [&](const std::vector<SurfacePoint>& spots) {
+    const SurfacePoint* best = nullptr;
+    double best_d2 = squared_norm(cq - to) * (1 - 1e-9);
+    for (const SurfacePoint& s : spots) {
+      const double d2 = squared_norm(s.p - to);
+      if (d2 < best_d2) best = &s, best_d2 = d2;
+    }
+    return best;
+  };
+  // First the positions that cover the void, the other disks left out: on a triangle
+  // they make a convex set holding every position, and the candidates hold its point
+  // nearest `to`. So when none is nearer than q is now, no position is; and when the
+  // nearest meets no disk, it is the answer. The other disks' spheres (many more
+  // circles) only where it meets one. (With a sizing the covering balls shrink until
+  // some position is found, which the disks change: the full search at once.)
+  std::vector<SurfacePoint> spots;
   const SurfacePoint* best = nullptr;
-  double best_d2 = squared_norm(cq - to) * (1 - 1e-9);
-  for (const SurfacePoint& s : spots) {
-    const double d2 = squared_norm(s.p - to);
-    if (d2 < best_d2) best = &s, best_d2 = d2;
+  if (packing.sizing().is_constant()) {
+    spots = positions(packing, voids, cq, 2 * rq, q, passable, &to, false);
+    best = nearest(spots);
+    if (!best) return;
+  }
+  if (!best || packing.conflicts(*best, q, passable)) {
+    spots = covering_positions(packing, voids, cq, 2 * rq, q, passable, &to);
+    best = nearest(spots);
   }
   if (!best) return;
   const std::size_t before = log.mark();
