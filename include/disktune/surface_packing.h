@@ -48,7 +48,17 @@ class SpaceGrid {
  public:
   explicit SpaceGrid(double cell) : cell_(cell) {}
   double cell() const { return cell_; }
-  void insert(std::uint32_t id, Vec3 p) { items_at(key(p)).push_back({p, id}); }
+  void insert(std::uint32_t id, Vec3 p) {
+    Cell& cell = cell_at(key(p));
+    cell.items.push_back({p, id});
+    ++cell.changes;
+  }
+  /// Counts a change in the cell holding p, as insert and remove do.
+  void touch(Vec3 p) { ++cell_at(key(p)).changes; }
+  /// The inserts, removals and touches so far in the cells meeting the box [q - R,
+  /// q + R], summed: it grows with every one, so an unchanged sum means nothing there
+  /// changed (cells never go away; cells sharing a key only make it grow more often).
+  std::uint64_t changes_in_box(Vec3 q, double R) const;
   /// Unregisters `id`, known to be at `p` (nothing when it is not there).
   void remove(std::uint32_t id, Vec3 p);
   std::uint64_t key(Vec3 p) const;
@@ -92,13 +102,14 @@ class SpaceGrid {
   struct Cell {
     std::uint64_t key = kEmpty;
     std::vector<Item> items;  // kept when emptied: a cell once used is likely used again
+    std::uint64_t changes = 0;
   };
   static constexpr std::uint64_t kEmpty = ~std::uint64_t{0};  // pack never makes it
 
   template <class Pred>
   bool any_item_in_box(Vec3 q, double R, Pred&& pred) const;
   const std::vector<Item>* items_of(std::uint64_t key) const;
-  std::vector<Item>& items_at(std::uint64_t key);  // adds the cell when missing
+  Cell& cell_at(std::uint64_t key);                // adds the cell when missing
   std::size_t slot_of(std::uint64_t key) const;    // its slot, or the empty one it would take
   static std::uint64_t pack(std::int64_t i, std::int64_t j, std::int64_t k);
   std::int64_t coord(double v) const;
@@ -221,6 +232,14 @@ class SurfacePacking {
   }
   bool covered(Vec3 q, PatchSet on, DiskId ignore1 = kNoDisk, DiskId ignore2 = kNoDisk) const;
 
+  /// Grows with every insert, removal, move or flag change of a disk centered in the
+  /// neighbour grid's cells meeting the box [q - R, q + R] (SpaceGrid::changes_in_box):
+  /// while it stays the same, nothing near q changed, and what was found there holds.
+  std::uint64_t changes_near(Vec3 q, double R) const { return grid_.changes_in_box(q, R); }
+  /// A number no other packing object of the process has, taken anew by a copy: what
+  /// is kept about one packing (changes_near) is never taken for another's.
+  std::uint64_t serial() const { return serial_.value; }
+
   /// The width of the neighbour grid's cells (a query within R of q reads the cells
   /// meeting the box [q - R, q + R]; an item lies in the cell holding its center).
   double grid_cell() const { return grid_.cell(); }
@@ -235,8 +254,17 @@ class SurfacePacking {
   bool grid_cells_distinct(double reach) const;
 
  private:
+  // A fresh number for every object, also for copies and moves.
+  struct Serial {
+    std::uint64_t value = next();
+    Serial() = default;
+    Serial(const Serial&) : value(next()) {}
+    Serial& operator=(const Serial&) { return value = next(), *this; }
+    static std::uint64_t next();
+  };
   std::shared_ptr<const SurfaceIndex> index_;
   std::shared_ptr<const SurfaceSizing> sizing_;
+  Serial serial_;
   SpaceGrid grid_;
   std::vector<SurfacePoint> point_;
   std::vector<double> radius_;  // 0 marks a free id

@@ -2,13 +2,14 @@
 #include "disktune/surface_packing.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <sstream>
 
-#include "disktune/errors.h"
-#include "disktune/tolerance.h"
 #include "../domain/box_tree.h"
 #include "../domain/precision.h"
+#include "disktune/errors.h"
+#include "disktune/tolerance.h"
 
 namespace disktune {
 
@@ -51,11 +52,11 @@ const std::vector<SpaceGrid::Item>* SpaceGrid::items_of(std::uint64_t key) const
   return cell.key == key ? &cell.items : nullptr;
 }
 
-std::vector<SpaceGrid::Item>& SpaceGrid::items_at(std::uint64_t key) {
+SpaceGrid::Cell& SpaceGrid::cell_at(std::uint64_t key) {
   // A cell that exists is returned without touching the table (add_cells relies on it).
   if (used_ > 0) {
     Cell& cell = table_[slot_of(key)];
-    if (cell.key == key) return cell.items;
+    if (cell.key == key) return cell;
   }
   if (2 * (used_ + 1) > table_.size()) {  // grow: at most half full keeps probes short
     std::vector<Cell> old(std::max<std::size_t>(64, 2 * table_.size()));
@@ -68,7 +69,23 @@ std::vector<SpaceGrid::Item>& SpaceGrid::items_at(std::uint64_t key) {
     cell.key = key;
     ++used_;
   }
-  return cell.items;
+  return cell;
+}
+
+std::uint64_t SpaceGrid::changes_in_box(Vec3 q, double R) const {
+  if (used_ == 0) return 0;
+  const std::int64_t i0 = coord(q.x - R), i1 = coord(q.x + R);
+  const std::int64_t j0 = coord(q.y - R), j1 = coord(q.y + R);
+  const std::int64_t k0 = coord(q.z - R), k1 = coord(q.z + R);
+  std::uint64_t sum = 0;
+  for (std::int64_t i = i0; i <= i1; ++i)
+    for (std::int64_t j = j0; j <= j1; ++j)
+      for (std::int64_t k = k0; k <= k1; ++k) {
+        const std::uint64_t key = pack(i, j, k);
+        const Cell& cell = table_[slot_of(key)];
+        if (cell.key == key) sum += cell.changes;
+      }
+  return sum;
 }
 
 void SpaceGrid::add_cells(Vec3 q, double R) {
@@ -77,7 +94,7 @@ void SpaceGrid::add_cells(Vec3 q, double R) {
   const std::int64_t k0 = coord(q.z - R), k1 = coord(q.z + R);
   for (std::int64_t i = i0; i <= i1; ++i)
     for (std::int64_t j = j0; j <= j1; ++j)
-      for (std::int64_t k = k0; k <= k1; ++k) items_at(pack(i, j, k));
+      for (std::int64_t k = k0; k <= k1; ++k) cell_at(pack(i, j, k));
 }
 
 bool SpaceGrid::keys_distinct_within(Vec3 lo, Vec3 hi) const {
@@ -96,6 +113,7 @@ void SpaceGrid::remove(std::uint32_t id, Vec3 p) {
   if (at != v.end()) {
     *at = v.back();
     v.pop_back();
+    ++cell.changes;
   }
 }
 
@@ -275,6 +293,7 @@ void SurfacePacking::set_flags(DiskId id, std::uint8_t f) {
   const bool refix = (f ^ flags_[id]) & kFixed;
   flags_[id] = f;
   if (refix) patches_[id] = patches_for(point_[id], f);
+  grid_.touch(point_[id].p);  // the disk's patches count where it covers: a change there
 }
 
 void SurfacePacking::remove(DiskId id) {
@@ -297,6 +316,11 @@ bool SurfacePacking::grid_cells_distinct(double reach) const {
   const double grown = reach + grid_.cell();
   const Vec3 margin{grown, grown, grown};
   return grid_.keys_distinct_within(domain().bbox_min() - margin, domain().bbox_max() + margin);
+}
+
+std::uint64_t SurfacePacking::Serial::next() {
+  static std::atomic<std::uint64_t> count{0};
+  return ++count;
 }
 
 std::vector<DiskId> SurfacePacking::ids() const {

@@ -50,11 +50,11 @@
 #include <vector>
 
 #include "../geometry/triangle_arrangement.h"
-
 #include "disktune/packing.h"
 #include "disktune/surface_packing.h"
 #include "disktune/surface_voids.h"
 #include "disktune/voids.h"
+#include "own_voids.h"
 #include "surface_repair.h"
 #include "undo_log.h"
 #include "void_repair.h"
@@ -198,6 +198,10 @@ struct Space<SurfacePacking> {
   static double void_reach(double r) { return detail::void_reach(r); }
   static std::vector<VoidPoint> voids_in(const SurfacePacking& packing, Location c, double R,
                                          const std::vector<DiskId>& ignore) {
+    // A disk's own void (own_voids.h: kept while nothing near it changes).
+    if (ignore.size() == 1 && packing.alive(ignore[0]) && packing.center(ignore[0]) == c &&
+        R == void_reach(packing.radius(ignore[0])))
+      return own_voids(packing, ignore[0]);
     return voids_near(packing, c, R, ignore);
   }
   static Point void_choice(const SurfacePacking& packing, const std::vector<VoidPoint>& voids, Rng& rng) {

@@ -7,6 +7,7 @@
 #include "../geometry/triangle_arrangement.h"
 #include "../voids/surface_cell.h"
 #include "disktune/tolerance.h"
+#include "own_voids.h"
 #include "void_repair.h"
 
 namespace disktune::detail {
@@ -177,7 +178,7 @@ bool sole_cover_point(const SurfacePacking& packing, const std::vector<SurfaceVo
 void pull_toward(SurfaceUndoLog& log, SurfacePacking& packing, DiskId q, Vec3 to, DiskId passable) {
   const Vec3 cq = packing.center(q);
   const double rq = packing.radius(q);
-  const auto voids = voids_near(packing, cq, void_reach(rq), {q});
+  const auto voids = own_voids(packing, q);
   if (voids.empty()) return;
   const auto nearest = [&](const std::vector<SurfacePoint>& spots) {
     const SurfacePoint* best = nullptr;

@@ -6,6 +6,7 @@
 #include "disktune/density.h"
 #include "disktune/errors.h"
 #include "disktune/surface_tuning.h"
+#include "own_voids.h"
 #include "phase_loop.h"
 #include "surface_tune.h"
 #include "transaction.h"
@@ -40,6 +41,8 @@ TuneResult detail::tune_surface(SurfacePacking& packing, const Target& target, R
     respace_surface_boundary(packing, 1 / relative_radius_for(eta), rng);
     if (budget.passed(packing.size(), goal)) packing = entry;
     if (options.after_surface_operation) options.after_surface_operation(packing);
+    const detail::OwnVoidCache own_void_cache(
+        packing);  // the phases ask the same voids again and again
     return detail::run_phases(packing, entry, unit, goal, plans, rng, options,
                               options.after_surface_operation, t0, final_check);
   });
