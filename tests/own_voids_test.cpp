@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <memory>
 #include <vector>
 
 #include "../src/tuning/surface_repair.h"
@@ -39,11 +40,15 @@ SurfacePoint random_point(const SurfaceDomain& domain, Rng& rng) {
   return {v[tri[0]] + (v[tri[1]] - v[tri[0]]) * a + (v[tri[2]] - v[tri[0]]) * b, t};
 }
 
+// An MPS of eight.off (about 1,400 disks).
+SurfacePacking eight_sample(const std::shared_ptr<const SurfaceDomain>& domain, Rng& rng) {
+  return sample_mps(domain, SurfaceSizing::constant(0.03 * diagonal(*domain)), rng);
+}
+
 TEST(OwnVoidCache, AnswersAsAFreshScanThroughEveryKindOfChange) {
   const auto domain = test::surface_file("eight.off");
   Rng rng(3);
-  SurfacePacking packing =
-      sample_mps(domain, SurfaceSizing::constant(0.03 * diagonal(*domain)), rng);
+  SurfacePacking packing = eight_sample(domain, rng);
   const detail::OwnVoidCache cache(packing);
   const double r = packing.max_radius();
   for (const DiskId p : packing.ids()) expect_fresh(packing, p);  // all kept once
@@ -80,8 +85,7 @@ TEST(OwnVoidCache, AnswersAsAFreshScanThroughEveryKindOfChange) {
 TEST(OwnVoidCache, AnotherPackingIsNotServedFromIt) {
   const auto domain = test::surface_file("eight.off");
   Rng rng(4);
-  SurfacePacking packing =
-      sample_mps(domain, SurfaceSizing::constant(0.03 * diagonal(*domain)), rng);
+  SurfacePacking packing = eight_sample(domain, rng);
   const detail::OwnVoidCache cache(packing);
   const DiskId p = packing.ids().front();
   expect_fresh(packing, p);
