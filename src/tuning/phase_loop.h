@@ -63,7 +63,7 @@ struct PhasePlan {
   double min_gain = 0;
   bool judge_parts = false;
   // Where set, a sweep tries the disks in the order of this rank, smallest first
-  // (ranked_sweep), not at random.
+  // (ranked_sweep), not at random; its sweeps are judged whole (not judge_parts).
   double (*rank)(const P&, DiskId) = nullptr;
 };
 
@@ -158,8 +158,9 @@ std::vector<PhasePlan<P>> plan_for(const TuneOptions& o, bool eject, bool one_ra
   // narrowest own void first (own_void_width), and sifting hands over to them at the
   // first sixteenth of a sweep removing under 3 % of its tries (what it leaves, the
   // ejection rounds come back for): the elephant's tune to 0.7x at 10^5 13.0 -> 7.9 s
-  // (ranked 11.6 s; sifting cut at 0.3 %, 1 % 9.1, 8.5 s; at 10 % 7.8 s, but eight.off
-  // to 0.62x then took 7.8 and 10.6 s where 3 % takes 8.4 and 8.6, docs/tuning.md).
+  // (11.6 s with the ranking alone; with the cut at 0.3 % or 1 %, 9.1 and 8.5 s; at
+  // 10 %, 7.8 s, but eight.off to 0.62x then took 7.8 and 10.6 s where 3 % takes 8.4
+  // and 8.6; docs/tuning.md).
   Plan quick_void_phase = void_phase, quick_sift_phase = sift_phase;
   quick_void_phase.min_gain = 0.02;
   quick_void_phase.judge_parts = true;
@@ -252,12 +253,10 @@ TuneResult run_phases(P& packing, const P& entry, double unit, std::size_t goal,
     }
   };
 
-  // One sweep of a phase: a whole-packing sweep, or its operation on every disk in
-  // random order.
   // A sweep in the order of plan.rank, smallest first: each disk is ranked again when
   // its turn comes (the operations since may have changed it) and goes back into the
-  // queue when it now ranks behind the next, so every live disk is tried once, and
-  // the queue stays in step at one rank per try. Ties keep the random order.
+  // queue when it now ranks behind the next. Every live disk is tried once; ties keep
+  // the random order.
   auto ranked_sweep = [&](const PhasePlan<P>& plan,
                           const std::vector<DiskId>& order) -> std::size_t {
     using Entry = std::tuple<double, std::size_t, DiskId>;  // rank, place in `order`, disk
@@ -281,6 +280,8 @@ TuneResult run_phases(P& packing, const P& entry, double unit, std::size_t goal,
     return order.size();
   };
 
+  // One sweep of a phase: a whole-packing sweep, or its operation on every disk in
+  // random order (or ranked).
   auto run_sweep = [&](const PhasePlan<P>& plan, bool sparse, bool& stalled) -> std::size_t {
     const std::size_t size_before = packing.size();
     if (plan.sweep) {
