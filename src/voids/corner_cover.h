@@ -56,6 +56,7 @@ class CornerCover {
   // one side leave a void on the other (a hexagonal crystal missing the three disks in
   // a triangle of side 2r has a hole there, of circumradius 2r/sqrt3).
   bool leaves_a_wedge() const {
+    if (surrounded_with_room()) return false;  // most calls: no angle needed
     constexpr double kPi = 3.14159265358979323846;
     double angle[kMax];
     for (int k = 0; k < n_; ++k) angle[k] = std::atan2(through_[k].y, through_[k].x);
@@ -63,6 +64,28 @@ class CornerCover {
     double gap = angle[0] + 2 * kPi - angle[n_ - 1];
     for (int k = 1; k < n_; ++k) gap = std::max(gap, angle[k] - angle[k - 1]);
     return gap > kPi - 1e-9;
+  }
+
+  // True when three of the directions turn one into the next (going round) by angles
+  // each between 1e-6 and pi - 1e-6: the sine of each turn, their cross product over
+  // their lengths, above 1e-6, all three the same way round. The three turns then make
+  // one full turn, so no gap between any of the directions comes within 1e-6 of pi:
+  // the sorted angles would say the same (their rounding is ~1e-16), without atan2.
+  bool surrounded_with_room() const {
+    constexpr double kSin2 = 1e-12;        // (1e-6)^2
+    const auto turn = [&](int i, int j) {  // +1 or -1 for a turn with room, else 0
+      const double c = cross(through_[i], through_[j]);
+      if (c * c <= kSin2 * squared_norm(through_[i]) * squared_norm(through_[j])) return 0;
+      return c > 0 ? 1 : -1;
+    };
+    for (int i = 0; i < n_; ++i)
+      for (int j = i + 1; j < n_; ++j) {
+        const int ij = turn(i, j);
+        if (ij == 0) continue;
+        for (int k = j + 1; k < n_; ++k)
+          if (turn(j, k) == ij && turn(k, i) == ij) return true;
+      }
+    return false;
   }
 
   static constexpr int kMax = 16;
