@@ -59,6 +59,13 @@ struct CircleIntersection {
   std::array<Vec2, 2> points;
 };
 
+/// True when circles whose centers are d2 apart (squared) and whose radii add up to
+/// rsum are too far apart to meet, beyond the rounding slack intersect_circles allows
+/// (it finds no point then): a cheap first test for searches over many pairs.
+inline bool too_far_apart_to_meet(double d2, double rsum) {
+  return d2 > rsum * rsum + 8.0 * 2.220446049250313e-16 * std::max(d2, rsum * rsum);  // a few ulps
+}
+
 /// Midpoint-plus-perpendicular form, valid for unequal radii. The squared half-chord is
 /// clamped at zero when it is negative by no more than rounding, so near-tangent circles
 /// give their touching point instead of nothing or NaN.

@@ -14,7 +14,7 @@ CircleIntersection intersect_circles(Vec2 c1, double r1, Vec2 c2, double r2) {
   const double rdiff = r1 - r2;
   // Rounding slack on d^2 comparisons: a few ulps of the largest term.
   const double slack = 8.0 * 2.220446049250313e-16 * std::max(d2, rsum * rsum);
-  if (d2 > rsum * rsum + slack || d2 < rdiff * rdiff - slack) return out;
+  if (too_far_apart_to_meet(d2, rsum) || d2 < rdiff * rdiff - slack) return out;
   // a = signed distance from c1 to the chord midpoint along u, as a fraction of |u|.
   const double a = 0.5 + (r1 * r1 - r2 * r2) / (2.0 * d2);
   const Vec2 m = c1 + u * a;

@@ -98,11 +98,9 @@ void corners_in_region(const Packing& packing, Vec2 center, double R,
   const double lim = R * (1 + kRelTol);
   for (std::size_t i = 0; i < near.size(); ++i) {
     for (std::size_t j = i + 1; j < near.size(); ++j) {
-      // Circles too far apart to meet, as intersect_circles judges it: the cheap test
-      // first (about half the pairs of a dense packing's region).
-      const double rsum = near[i].radius + near[j].radius;
-      const double d2 = squared_distance(near[i].image, near[j].image);
-      if (d2 > rsum * rsum + 8.0 * 2.220446049250313e-16 * std::max(d2, rsum * rsum)) continue;
+      // The cheap test first: it drops about half the pairs of a dense packing's region.
+      if (too_far_apart_to_meet(squared_distance(near[i].image, near[j].image), near[i].radius + near[j].radius))
+        continue;
       if (!intersections_may_lie_in(near[i].image, near[i].radius, near[j].image, near[j].radius,
                                     center, lim)) {
         continue;
