@@ -6,7 +6,8 @@
 // depend on the target (only where it stops), so one run to the largest fraction times
 // them all.
 //
-//   disktune-tune-bench [--radius R] [--method auto|void|repeller|crystal|angle|sift|attractor]
+//   disktune-tune-bench [--radius R] [--method
+//   auto|void|repeller|crystal|grains|angle|sift|attractor]
 //                       [ETA ...]   (ascending for injection, descending for ejection)
 #include <chrono>
 #include <cstdio>
@@ -32,14 +33,7 @@ int main(int argc, char** argv) {
       r = std::atof(argv[++i]);
     } else if (!std::strcmp(argv[i], "--method") && i + 1 < argc) {
       method_name = argv[++i];
-      method = method_name == "void"        ? Method::void_injection
-               : method_name == "repeller"  ? Method::repeller_injection
-               : method_name == "crystal"   ? Method::crystal_injection
-               : method_name == "angle"     ? Method::angle_injection
-               : method_name == "sift"      ? Method::sift_ejection
-               : method_name == "attractor" ? Method::attractor_ejection
-               : method_name == "crystal-eject" ? Method::crystal_ejection
-                                            : Method::automatic;
+      method = method_named(method_name);  // throws InvalidInput, listing the names
     } else {
       etas.push_back(std::atof(argv[i]));
     }

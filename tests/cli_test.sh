@@ -124,6 +124,8 @@ expect tune 0 "^tune: [0-9]+ -> 900 disks \(target 900, reached\)" -- "$bin" tun
 "$bin" sample --radius 0.03 --seed 4 --output m.csv >/dev/null
 expect tune-input 0 "-> [0-9]+ disks .*reached.*eta = 0\.6[0-9]+" -- "$bin" tune --radius 0.03 --input m.csv --target-fraction 0.65 --method void -o /dev/null
 expect tune-crystal 0 "eta = 0\.85[0-9]*, " -- "$bin" tune --radius 0.03 --target-fraction 0.85 --method crystal -o /dev/null
+expect tune-grains 0 "eta = 0\.85[0-9]*, .*phase grain injection" -- "$bin" tune --radius 0.02 --target-fraction 0.85 --method grains -o /dev/null
+expect tune-grains-past 0 "eta = 0\.88[0-9]*, .*phase crystal injection" -- "$bin" tune --radius 0.02 --target-fraction 0.88 -o /dev/null
 expect tune-not-reached 4 "NOT reached" -- "$bin" tune --radius 0.03 --target-fraction 0.9 --method void --output nr.csv
 [ -s nr.csv ] && pass=$((pass + 1)) || { echo "FAIL not-reached writes the closest packing"; fails=$((fails + 1)); }
 # --relax: the count kept, the packing still conflict-free and maximal (report's own check).

@@ -297,6 +297,50 @@ TEST(Tune, CrystalPhaseHitsExactCounts) {
   }
 }
 
+// Grain injection from many nuclei (a grain per 40 disks here, so that a small packing
+// gets a dozen): the oracle after every step it keeps, the count never past the target,
+// and the automatic schedule and the method alone hit exact counts past where the grains
+// stall (one crystal then grows through them).
+TEST(Tune, GrainInjectionKeepsEveryStepValid) {
+  const PeriodicBox box;
+  for (const std::uint64_t seed : {1, 2, 3}) {
+    Rng rng(seed);
+    Packing p = sample_mps(box, 0.03, rng);
+    const std::size_t start = p.size(), room = count_for_area_fraction(0.85, 0.03, 1.0) - start;
+    std::size_t steps = 0, last = start;
+    const std::size_t added = grain_inject(
+        p, rng, room,
+        [&] {
+          ++steps;
+          ASSERT_GE(p.size(), last);
+          last = p.size();
+          ASSERT_TRUE(valid(box, p, seed * 1000 + steps));
+        },
+        40);
+    EXPECT_GT(steps, 10u) << "seed " << seed;
+    EXPECT_EQ(p.size(), start + added);
+    EXPECT_LE(added, room);
+    EXPECT_TRUE(valid(box, p, seed));
+  }
+}
+
+TEST(Tune, GrainPhasesHitExactCounts) {
+  const PeriodicBox box;
+  Rng rng(12);
+  const Packing mps = sample_mps(box, 0.02, rng);
+  for (const Method method : {Method::automatic, Method::grain_injection}) {
+    for (const double eta : {0.82, 0.85, 0.88}) {
+      Packing p = mps;
+      TuneOptions opt;
+      opt.method = method;
+      const TuneResult res = tune(p, box, Target::area_fraction(eta), rng, opt);
+      EXPECT_TRUE(res.reached) << eta;
+      EXPECT_EQ(p.size(), count_for_area_fraction(eta, 0.02, 1.0));
+      EXPECT_TRUE(valid(box, p, 5));
+    }
+  }
+}
+
 // The last crystal step can need more disks to refill its voids than the target
 // allows; it must then be taken back whole, not left with the voids half filled (seeds 3
 // and 17 left a hole before; found by the planar oracle).
@@ -430,6 +474,7 @@ TEST(MethodNames, EveryNameAndNoOther) {
   EXPECT_EQ(method_named("void"), Method::void_injection);
   EXPECT_EQ(method_named("repeller"), Method::repeller_injection);
   EXPECT_EQ(method_named("crystal"), Method::crystal_injection);
+  EXPECT_EQ(method_named("grains"), Method::grain_injection);
   EXPECT_EQ(method_named("angle"), Method::angle_injection);
   EXPECT_EQ(method_named("sift"), Method::sift_ejection);
   EXPECT_EQ(method_named("attractor"), Method::attractor_ejection);

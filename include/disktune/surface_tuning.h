@@ -100,5 +100,9 @@ std::size_t crystal_inject(SurfacePacking& packing, Rng& rng, std::size_t max_ad
                            const std::function<void()>& after_step = {});
 std::size_t crystal_eject(SurfacePacking& packing, Rng& rng, std::size_t max_removed,
                           const std::function<void()>& after_step = {});
+/// Crystal injection from many nuclei (tuning.h, grain_inject).
+std::size_t grain_inject(SurfacePacking& packing, Rng& rng, std::size_t max_added,
+                         const std::function<void()>& after_step = {},
+                         std::size_t disks_per_grain = kDisksPerGrain);
 
 }  // namespace disktune

@@ -47,6 +47,7 @@ enum class Phase {
   void_injection,
   repeller_injection,
   crystal_injection,
+  grain_injection,  // crystal injection from many nuclei (grain_inject)
   angle_injection,
   sift_ejection,
   attractor_ejection,
@@ -58,14 +59,17 @@ enum class Phase {
 std::string to_string(Phase phase);
 
 /// How `tune` picks operations: `automatic` runs the phases in the paper's order,
-/// switching at the area-fraction thresholds or when a phase stops making progress;
+/// switching at the area-fraction thresholds or when a phase stops making progress
+/// (with one radius and off curved surfaces: void, repeller, then grain injection, then
+/// one crystal where the grains stall);
 /// the others run one phase alone (angle injection is not part of the automatic
 /// schedule: the paper offers it as an alternative that targets obtuse triangles).
 /// Targets below the current count run ejection: automatic is sifting, then attractor
 /// ejection, then crystal ejection, then wide attractor ejection (three rings; on a
 /// surface before the crystal); `attractor_ejection` is one ring, then three. Crystal
 /// injection (alone or in the automatic schedule) is followed by repeller injection for
-/// the last few disks, which crystal steps near the exact target cannot add without
+/// the last few disks (`grain_injection` alone: by one crystal where the grains stall,
+/// then repeller injection), which crystal steps near the exact target cannot add without
 /// passing it. With a sizing (varying radii)
 /// there are no crystal phases (paper, 6).
 enum class Method {
@@ -73,12 +77,13 @@ enum class Method {
   void_injection,
   repeller_injection,
   crystal_injection,
+  grain_injection,
   angle_injection,
   sift_ejection,
   attractor_ejection,
   crystal_ejection
 };
-/// The method called `name`: auto, void, repeller, crystal, angle, sift, attractor or
+/// The method called `name`: auto, void, repeller, crystal, grains, angle, sift, attractor or
 /// crystal-eject (the names `disktune tune --method` takes). Throws InvalidInput, listing
 /// them, for any other.
 Method method_named(const std::string& name);
@@ -168,6 +173,19 @@ std::size_t repel_from(Packing& packing, Vec2 point, DiskId self, Rng& rng, std:
 /// that changed the packing. Returns the number of disks added.
 std::size_t crystal_inject(Packing& packing, Rng& rng, std::size_t max_added,
                            const std::function<void()>& after_step = {});
+
+/// The disks a grain of grain_inject holds, on average, by default.
+inline constexpr std::size_t kDisksPerGrain = 300;
+
+/// Grain injection (beyond the paper, which grows one crystal): crystal_inject from one
+/// nucleus for each `disks_per_grain` disks, far apart and at random orientations, all
+/// growing from one front until they meet. The packing keeps no common orientation
+/// (the unit box at r = 0.005 to eta 0.85: global psi6 0.09 against 0.62 for one
+/// crystal, docs/tuning.md); grain boundaries are looser than a crystal, so it stalls
+/// near eta 0.86, where one crystal reaches 0.90. Returns the number of disks added.
+std::size_t grain_inject(Packing& packing, Rng& rng, std::size_t max_added,
+                         const std::function<void()>& after_step = {},
+                         std::size_t disks_per_grain = kDisksPerGrain);
 
 /// Crystal-growth ejection (3.2): as crystal_inject, with the lattice spacing sqrt(3) r
 /// of the sparsest covering: a mobile disk covering a site moves there, the disks it

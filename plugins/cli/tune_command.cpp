@@ -154,15 +154,19 @@ void add_tune_command(CLI::App& app, Action& action) {
                               "Relative radius rho = r / sqrt(2A / (sqrt(3) N)) wanted (below 1)");
   count->excludes(fraction)->excludes(rho);
   fraction->excludes(rho);
-  cmd->add_option("--method", args->method,
-                  "auto: denser by void, then repeller, then crystal injection (switching at eta "
-                  "0.75 and 0.79, or when a phase stalls), sparser by sifting, then attractor, then "
-                  "crystal ejection, then attractor ejection over three rings of neighbours (on a "
-                  "surface before the crystal); or one phase alone: void, repeller, crystal, angle "
-                  "(repel from the circumcenters of obtuse Delaunay triangles), sift, attractor (one "
-                  "ring, then three), crystal-eject")
-      ->check(CLI::IsMember(
-          {"auto", "void", "repeller", "crystal", "angle", "sift", "attractor", "crystal-eject"}))
+  cmd->add_option(
+         "--method", args->method,
+         "auto: denser by void, then repeller, then grain injection (switching at eta "
+         "0.75 and 0.79, or when a phase stalls; one crystal where the grains stall, near "
+         "0.86; on a curved surface void, then crystal injection), sparser by sifting, then "
+         "attractor, then "
+         "crystal ejection, then attractor ejection over three rings of neighbours (on a "
+         "surface before the crystal); or one phase alone: void, repeller, crystal (one "
+         "ordered crystal), grains (crystals from many nuclei at random orientations), angle "
+         "(repel from the circumcenters of obtuse Delaunay triangles), sift, attractor (one "
+         "ring, then three), crystal-eject")
+      ->check(CLI::IsMember({"auto", "void", "repeller", "crystal", "grains", "angle", "sift",
+                             "attractor", "crystal-eject"}))
       ->capture_default_str();
   reads_file(cmd->add_option("--input,-i", args->input,
                              "Start from this CSV (x,y,r, or x,y,z,r on a surface; a conflict-free maximal "

@@ -12,7 +12,10 @@
 // an attractor no disk covers gets a new frozen disk at once (Fig. 4, "inject
 // immediately"). Attractors are taken in random order from the crystal's front (the
 // paper allows visiting the disks near attractors instead of all disks), so one crystal
-// grows over the domain. The batch-and-commit loop is crystal_grow.h's.
+// grows over the domain. Grain injection (beyond the paper; issue #19) seeds many
+// crystals at once, far apart and each at its own random orientation, and grows them
+// together from one front: they meet in grain boundaries, and the packing keeps no
+// common orientation. The batch-and-commit loop is crystal_grow.h's.
 #include <algorithm>
 #include <cmath>
 
@@ -35,12 +38,14 @@ class Crystal {
   using Log = detail::BasicUndoLog<P>;
 
  public:
-  Crystal(P& packing, Rng& rng, bool inject)
+  // disks_per_grain 0: one crystal; else one nucleus for each that many disks.
+  Crystal(P& packing, Rng& rng, bool inject, std::size_t disks_per_grain = 0)
       : p_(packing),
         rng_(rng),
         r_(packing.max_radius()),
         s_(inject ? r_ : std::sqrt(3.0) * r_),
         inject_(inject),
+        disks_per_grain_(disks_per_grain),
         sites_(packing, r_) {}
 
   // What grow_crystal needs besides seed, taken and settle.
@@ -106,9 +111,10 @@ class Crystal {
 
   // Two disks at distance s: an existing mobile pair (injected disks often sit exactly
   // r apart), or a random mobile disk and a disk brought to a random site at distance s.
+  // For grains, many such nuclei (seed_grains).
   bool seed(Log& log, std::size_t room) {
-    std::vector<DiskId> order = p_.ids();
-    for (std::size_t i = order.size(); i > 1; --i) std::swap(order[i - 1], order[uniform_index(rng_, i)]);
+    const std::vector<DiskId> order = shuffled_ids();
+    if (disks_per_grain_ > 0) return seed_grains(log, order, room);
     const double lo = s_ * s_ * (1 - 4 * kRelTol), hi = s_ * s_ * (1 + 4 * kRelTol);
     for (const DiskId a : order) {
       if (!mobile(a)) continue;
@@ -132,6 +138,37 @@ class Crystal {
     return false;
   }
 
+  // One nucleus for each disks_per_grain disks: a random mobile disk with a disk brought
+  // to a site at distance s, none nearer than half the side of a grain's area (in
+  // spacings: sqrt(disks_per_grain)) to a frozen disk, so that the nuclei spread over
+  // the domain and each has room to grow. Their orientations are spread evenly over the
+  // lattice's period (a sixth of a turn) from a random start, not drawn independently:
+  // grains of equal size then cancel in the global psi6 (independent ones leave about
+  // 1/sqrt(grains) of it; the README's job, 34 grains: 0.10-0.20).
+  bool seed_grains(Log& log, const std::vector<DiskId>& order, std::size_t room) {
+    const std::size_t wanted = std::max<std::size_t>(1, p_.size() / disks_per_grain_);
+    const double apart = 0.5 * s_ * std::sqrt(static_cast<double>(disks_per_grain_));
+    const double start = uniform01(rng_);
+    std::size_t seeded = 0;
+    for (const DiskId a : order) {
+      if (seeded == wanted) break;
+      if (!p_.alive(a) || !mobile(a) || S::any_near(p_, p_.center(a), apart, [&](const Near& n) {
+            return (p_.flags(n.id) & kFrozen) != 0;
+          }))
+        continue;
+      Point site;
+      const double turn = (static_cast<double>(seeded) + start) / static_cast<double>(wanted) / 6;
+      if (!S::point_at_turn(p_, a, s_, turn, site)) continue;
+      const std::size_t mark = log.mark();
+      freeze(log, a, p_.center(a));
+      if (settle(log, site, room))
+        ++seeded;
+      else
+        log.revert_to(mark);
+    }
+    return seeded > 0;
+  }
+
   // After a site settled in ejection: the mobile disks around it go through attractor
   // ejection (3.2: disks that cover no attractor move as in attractor ejection), which
   // removes those the lattice made redundant and pays for the voids the step refilled.
@@ -152,6 +189,13 @@ class Crystal {
 
   bool mobile(DiskId id) const { return !(p_.flags(id) & (kFixed | kFrozen)); }
 
+  std::vector<DiskId> shuffled_ids() {
+    std::vector<DiskId> order = p_.ids();
+    for (std::size_t i = order.size(); i > 1; --i)
+      std::swap(order[i - 1], order[uniform_index(rng_, i)]);
+    return order;
+  }
+
   // Freezes disk `id` (now at `at`; on the torus, in any frame) and adds the sites its
   // lattice neighbours (frozen disks at distance s) make with it.
   void freeze(Log& log, DiskId id, Location at) {
@@ -169,6 +213,7 @@ class Crystal {
   Rng& rng_;
   double r_, s_;
   bool inject_;
+  std::size_t disks_per_grain_;
   typename S::Sites sites_;
 };
 
@@ -176,9 +221,10 @@ bool one_radius(const Packing& packing) { return packing.sizing() == nullptr; }
 bool one_radius(const SurfacePacking& packing) { return packing.sizing().is_constant(); }
 
 template <class P>
-std::size_t grow(P& packing, Rng& rng, bool inject, std::size_t max_change, const std::function<void()>& after_step) {
+std::size_t grow(P& packing, Rng& rng, bool inject, std::size_t max_change,
+                 const std::function<void()>& after_step, std::size_t disks_per_grain = 0) {
   detail::require_one_radius(one_radius(packing));
-  Crystal<P> crystal(packing, rng, inject);
+  Crystal<P> crystal(packing, rng, inject, disks_per_grain);
   return detail::grow_crystal<detail::BasicUndoLog<P>>(crystal, inject, max_change, after_step);
 }
 
@@ -191,6 +237,10 @@ std::size_t crystal_eject(Packing& packing, Rng& rng, std::size_t max_removed,
                           const std::function<void()>& after_step) {
   return grow(packing, rng, false, max_removed, after_step);
 }
+std::size_t grain_inject(Packing& packing, Rng& rng, std::size_t max_added,
+                         const std::function<void()>& after_step, std::size_t disks_per_grain) {
+  return grow(packing, rng, true, max_added, after_step, std::max<std::size_t>(disks_per_grain, 1));
+}
 std::size_t crystal_inject(SurfacePacking& packing, Rng& rng, std::size_t max_added,
                            const std::function<void()>& after_step) {
   return grow(packing, rng, true, max_added, after_step);
@@ -198,6 +248,10 @@ std::size_t crystal_inject(SurfacePacking& packing, Rng& rng, std::size_t max_ad
 std::size_t crystal_eject(SurfacePacking& packing, Rng& rng, std::size_t max_removed,
                           const std::function<void()>& after_step) {
   return grow(packing, rng, false, max_removed, after_step);
+}
+std::size_t grain_inject(SurfacePacking& packing, Rng& rng, std::size_t max_added,
+                         const std::function<void()>& after_step, std::size_t disks_per_grain) {
+  return grow(packing, rng, true, max_added, after_step, std::max<std::size_t>(disks_per_grain, 1));
 }
 
 }  // namespace disktune

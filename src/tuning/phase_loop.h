@@ -128,7 +128,9 @@ inline void check_direction(Method method, bool eject) {
 /// The phases for a method, in order. Injection phases move on at their area fraction
 /// (automatic schedule) or when they stall; ejection phases when they stall. No crystal
 /// growth for varying radii (paper, 6); `angle` is null where angle injection is not
-/// defined (surfaces), and asking for it then throws InvalidInput. On a `curved` surface
+/// defined (surfaces), and asking for it then throws InvalidInput. Past the repeller the
+/// automatic schedule grows many grains (grain_inject: no common orientation), and one
+/// crystal only where their boundaries stall it. On a `curved` surface
 /// a lattice cannot close, so the crystal phases do less: injection goes from void
 /// injection straight to the crystal (which barely grows in the dense random packing
 /// repeller injection leaves, and the repeller phase is the slow one), and ejection runs
@@ -143,6 +145,16 @@ std::vector<PhasePlan<P>> plan_for(const TuneOptions& o, bool eject, bool one_ra
   const Plan repeller_phase{
       Phase::repeller_injection, &repeller_inject, nullptr, o.repeller_until, false, true};
   const Plan crystal_phase{Phase::crystal_injection, nullptr, &crystal_inject, 2.0};
+  // Many grains at random orientations, then, where their boundaries leave the target
+  // out of reach (near eta 0.86), one crystal grown through them, thawed.
+  const Plan grain_phase{
+      Phase::grain_injection, nullptr,
+      +[](P& packing, Rng& rng, std::size_t max_added, const std::function<void()>& after_step) {
+        return grain_inject(packing, rng, max_added, after_step);
+      },
+      2.0};
+  Plan crystal_after_grains = crystal_phase;
+  crystal_after_grains.thaw = true;
   const Plan angle_phase{Phase::angle_injection, nullptr, angle, 2.0};
   const Plan sift_phase{Phase::sift_ejection, &sift_eject, nullptr, 2.0};
   const Plan attractor_phase{Phase::attractor_ejection, &attractor_eject, nullptr, 2.0};
@@ -187,10 +199,13 @@ std::vector<PhasePlan<P>> plan_for(const TuneOptions& o, bool eject, bool one_ra
       // Without crystal growth the repeller phase is the last: it runs until it stalls.
       if (!one_radius) return {void_phase, finish};
       return curved ? std::vector<Plan>{quick_void_phase, crystal_phase, finish}
-                    : std::vector<Plan>{void_phase, repeller_phase, crystal_phase, finish};
+                    : std::vector<Plan>{void_phase, repeller_phase, grain_phase,
+                                        crystal_after_grains, finish};
     case Method::void_injection: return alone(void_phase);
     case Method::repeller_injection: return alone(repeller_phase);
     case Method::crystal_injection: return {crystal_phase, finish};
+    case Method::grain_injection:
+      return {grain_phase, crystal_after_grains, finish};
     case Method::angle_injection:
       if (!angle) {
         throw InvalidInput("tune: angle injection triangulates the periodic box; here use void, "

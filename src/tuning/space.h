@@ -39,6 +39,7 @@
 // and, for crystal growth (lattice spacing s):
 //   for_each_site(P, a, ia, b, ib, s, f)  the points at distance s from centers a and b
 //   point_at(P, c, s, rng, x)  a random point at distance s from center c, or false
+//   point_at_turn(P, c, s, turn, x)  the point at that turn (in [0, 1)) around c
 //   Sites            the lattice sites waiting to be settled, each place once at a time
 // The primitives themselves are in void_repair.h / surface_repair.h.
 #pragma once
@@ -144,7 +145,10 @@ struct Space<Packing> {
     for (int k = 0; k < x.count; ++k) f(x.points[k]);
   }
   static bool point_at(const Packing& packing, DiskId c, double s, Rng& rng, Point& x) {
-    const double angle = 2 * 3.14159265358979323846 * uniform01(rng);
+    return point_at_turn(packing, c, s, uniform01(rng), x);
+  }
+  static bool point_at_turn(const Packing& packing, DiskId c, double s, double turn, Point& x) {
+    const double angle = 2 * 3.14159265358979323846 * turn;
     x = packing.center(c) + Vec2{std::cos(angle), std::sin(angle)} * s;
     return true;
   }
@@ -313,6 +317,21 @@ struct Space<SurfacePacking> {
   }
   // A random one of the points where the sphere S(c, s) crosses a triangle edge.
   static bool point_at(const SurfacePacking& packing, DiskId c, double s, Rng& rng, Point& x) {
+    const std::vector<Point> ring = edge_points_at(packing, c, s);
+    if (ring.empty()) return false;
+    x = ring[uniform_index(rng, ring.size())];
+    return true;
+  }
+  // A surface has no common direction: the turn (in [0, 1)) picks one of those points.
+  static bool point_at_turn(const SurfacePacking& packing, DiskId c, double s, double turn,
+                            Point& x) {
+    const std::vector<Point> ring = edge_points_at(packing, c, s);
+    if (ring.empty()) return false;
+    x = ring[std::min(ring.size() - 1,
+                      static_cast<std::size_t>(turn * static_cast<double>(ring.size())))];
+    return true;
+  }
+  static std::vector<Point> edge_points_at(const SurfacePacking& packing, DiskId c, double s) {
     std::vector<Point> ring;
     std::vector<std::uint32_t> tris;
     packing.index().triangles_near(packing.center(c), s, tris);
@@ -323,9 +342,7 @@ struct Space<SurfacePacking> {
                                     if (u == c && v == kNoDisk) ring.push_back({y, t});
                                   });
     }
-    if (ring.empty()) return false;
-    x = ring[uniform_index(rng, ring.size())];
-    return true;
+    return ring;
   }
   /// Sites in a hashed grid, each place once at a time.
   class Sites {

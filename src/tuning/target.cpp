@@ -75,6 +75,8 @@ std::string to_string(Phase phase) {
     case Phase::void_injection: return "void injection";
     case Phase::repeller_injection: return "repeller injection";
     case Phase::crystal_injection: return "crystal injection";
+    case Phase::grain_injection:
+      return "grain injection";
     case Phase::angle_injection: return "angle injection";
     case Phase::sift_ejection: return "sifted-disks ejection";
     case Phase::attractor_ejection: return "attractor ejection";
@@ -88,13 +90,20 @@ std::string to_string(Phase phase) {
 
 Method method_named(const std::string& name) {
   static const std::pair<const char*, Method> kNames[] = {
-      {"auto", Method::automatic},         {"void", Method::void_injection},
-      {"repeller", Method::repeller_injection}, {"crystal", Method::crystal_injection},
-      {"angle", Method::angle_injection},  {"sift", Method::sift_ejection},
-      {"attractor", Method::attractor_ejection}, {"crystal-eject", Method::crystal_ejection}};
+      {"auto", Method::automatic},
+      {"void", Method::void_injection},
+      {"repeller", Method::repeller_injection},
+      {"crystal", Method::crystal_injection},
+      {"grains", Method::grain_injection},
+      {"angle", Method::angle_injection},
+      {"sift", Method::sift_ejection},
+      {"attractor", Method::attractor_ejection},
+      {"crystal-eject", Method::crystal_ejection}};
   for (const auto& [known, method] : kNames)
     if (name == known) return method;
-  throw InvalidInput("method '" + name + "': give auto, void, repeller, crystal, angle, sift, attractor or crystal-eject");
+  throw InvalidInput(
+      "method '" + name +
+      "': give auto, void, repeller, crystal, grains, angle, sift, attractor or crystal-eject");
 }
 
 }  // namespace disktune
