@@ -2,9 +2,10 @@
 // disktune-tune-bench: from an MPS of the unit periodic square, the time at which
 // disk injection (or ejection, for fractions below the MPS's) first reaches each area
 // fraction of a list, against CGAL's Delaunay
-// triangulation of as many points, timed in the same run. The phases' path does not
-// depend on the target (only where it stops), so one run to the largest fraction times
-// them all.
+// triangulation of as many points, timed in the same run. The phases' path depends on
+// the target only through TuneOptions::grains_from_sample (the automatic schedule's
+// injection starts with grains at and past it) and otherwise only where it stops, so one
+// run to the largest fraction on each side of that threshold times them all.
 //
 //   disktune-tune-bench [--radius R] [--method
 //   auto|void|repeller|crystal|grains|angle|sift|attractor]
@@ -54,33 +55,50 @@ int main(int argc, char** argv) {
               area_fraction(packing.size(), r, 1.0), mps_s);
   std::printf("%8s %10s %12s %12s %10s  %s\n", "eta", "disks", "tune_s", "delaunay_s", "ratio", "phase");
 
-  std::size_t next = 0;
   TuneOptions options;
   options.method = method;
-  t0 = std::chrono::steady_clock::now();
-  std::vector<std::pair<double, Progress>> reached;  // time and state at each crossing
-  options.on_progress = [&](const Progress& p) {
-    auto passed = [&](std::size_t target) { return eject ? p.count <= target : p.count >= target; };
-    while (next < etas.size() && passed(count_for_area_fraction(etas[next], r, 1.0))) {
-      reached.push_back({std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), p});
-      ++next;
-    }
-    return true;
+  // The fractions one run times: those on one side of grains_from_sample.
+  const auto same_path = [&](double a, double b) {
+    return eject || method != Method::automatic ||
+           (a >= options.grains_from_sample) == (b >= options.grains_from_sample);
   };
-  const TuneResult res = tune(packing, box, Target::area_fraction(etas.back()), rng, options);
-  options.on_progress({res.count, area_fraction(res.count, r, 1.0), res.last_phase});
-  std::printf("final check of the result (and the packing kept before each phase): %.3f s of %.3f s (%.2f %%)\n",
-              res.check_seconds, res.seconds, 100 * res.check_seconds / res.seconds);
-  for (std::size_t k = 0; k < etas.size(); ++k) {
-    if (k >= reached.size()) {
-      std::printf("%8.3f %10s %12s %12s %10s  not reached (stopped at eta %.4f)\n", etas[k], "-", "-", "-", "-",
-                  area_fraction(res.count, r, 1.0));
-      continue;
+  const Packing mps = packing;
+  for (std::size_t first = 0; first < etas.size();) {
+    std::size_t last = first;
+    while (last + 1 < etas.size() && same_path(etas[first], etas[last + 1])) ++last;
+    packing = mps;
+    std::size_t next = first;
+    t0 = std::chrono::steady_clock::now();
+    std::vector<std::pair<double, Progress>> reached;  // time and state at each crossing
+    options.on_progress = [&](const Progress& p) {
+      auto passed = [&](std::size_t target) {
+        return eject ? p.count <= target : p.count >= target;
+      };
+      while (next <= last && passed(count_for_area_fraction(etas[next], r, 1.0))) {
+        reached.push_back(
+            {std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), p});
+        ++next;
+      }
+      return true;
+    };
+    const TuneResult res = tune(packing, box, Target::area_fraction(etas[last]), rng, options);
+    options.on_progress({res.count, area_fraction(res.count, r, 1.0), res.last_phase});
+    std::printf(
+        "final check of the run to %.3f (and the packing kept before each phase): %.3f s of %.3f s "
+        "(%.2f %%)\n",
+        etas[last], res.check_seconds, res.seconds, 100 * res.check_seconds / res.seconds);
+    for (std::size_t k = first; k <= last; ++k) {
+      if (k - first >= reached.size()) {
+        std::printf("%8.3f %10s %12s %12s %10s  not reached (stopped at eta %.4f)\n", etas[k], "-",
+                    "-", "-", "-", area_fraction(res.count, r, 1.0));
+        continue;
+      }
+      const auto& [t, p] = reached[k - first];
+      const double dt = bench::delaunay_seconds(p.count, 3, 99);
+      std::printf("%8.3f %10zu %12.2f %12.4f %10.1f  %s\n", etas[k], p.count, t, dt, t / dt,
+                  to_string(p.phase).c_str());
     }
-    const auto& [t, p] = reached[k];
-    const double dt = bench::delaunay_seconds(p.count, 3, 99);
-    std::printf("%8.3f %10zu %12.2f %12.4f %10.1f  %s\n", etas[k], p.count, t, dt, t / dt,
-                to_string(p.phase).c_str());
+    first = last + 1;
   }
   return 0;
 }

@@ -170,10 +170,11 @@ TEST(BondOrder, CrystalTunedPackingsHaveGrainsAsTheBruteForceFindsThem) {
 
 // The automatic schedule past the repeller grows many grains at orientations spread
 // over the lattice's period (grain_inject), not one crystal: by the brute force, many
-// grains, none a quarter of the packing, most disks hexagonal, and little common
-// orientation left. About 4,500-4,800 disks here (r = 0.015), 13-15 grains, whose unequal
-// sizes leave 0.06-0.16 (at 40,000 disks 0.009 and 0.046, docs/tuning.md); one crystal
-// leaves 0.6-0.9 at 0.85 in one grain of most of the disks.
+// grains, none a third of the packing, most disks hexagonal, and little common
+// orientation left. About 4,500-4,800 disks here (r = 0.015): 13-15 grains at 0.80, 9 at
+// 0.85 (grown from the sample, a nucleus per 300 of its disks), whose unequal sizes
+// leave 0.04-0.08 (at 40,000 disks about 0.01-0.02, docs/tuning.md); one crystal leaves
+// 0.7 at 0.85 in one grain of two thirds of the disks.
 TEST(BondOrder, TheAutomaticScheduleGrowsGrainsWithoutACommonOrientation) {
   const PeriodicBox box(1, 1);
   for (const std::uint64_t seed : {1, 2}) {
@@ -184,9 +185,9 @@ TEST(BondOrder, TheAutomaticScheduleGrowsGrainsWithoutACommonOrientation) {
       ASSERT_TRUE(tune(p, box, Target::area_fraction(eta), rng).reached);
       const Expected e = brute_force(p);
       EXPECT_LT(e.global, eta < 0.825 ? 0.1 : 0.2);
-      EXPECT_GE(e.grains, 8u);
+      EXPECT_GE(e.grains, 5u);
       EXPECT_GT(e.hexagonal_share, 0.4);
-      EXPECT_LT(e.largest, p.size() / 4);
+      EXPECT_LT(e.largest, p.size() / 3);
       std::printf(
           "[figures] grains: seed %d eta %.2f N=%zu psi6 %.3f, %.1f %% hexagonal, %zu grains "
           "(largest %zu)\n",

@@ -244,6 +244,7 @@ TEST(PlanarTuningSteps, OracleAfterEveryOperation) {
   const oracle::Domain od = oracle_domain(*domain);
   const double r = 0.05;
   const std::pair<double, Method> runs[] = {{0.8, Method::automatic},
+                                            {0.86, Method::automatic},  // grains from the start
                                             {0.4, Method::automatic},
                                             {0.85, Method::crystal_injection},
                                             {0.35, Method::crystal_ejection}};

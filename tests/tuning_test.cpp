@@ -324,6 +324,44 @@ TEST(Tune, GrainInjectionKeepsEveryStepValid) {
   }
 }
 
+// The automatic schedule's injection phases by target: the random phases, then grains,
+// below TuneOptions::grains_from_sample; grains from the start at and past it.
+TEST(Tune, TargetsPastGrainsFromSampleStartWithGrains) {
+  const auto phases = [](double eta, double from) {
+    TuneOptions o;
+    o.grains_from_sample = from;
+    std::vector<Phase> out;
+    for (const auto& plan : detail::plan_for<Packing>(o, false, true, &angle_inject, false, eta))
+      out.push_back(plan.phase);
+    return out;
+  };
+  const std::vector<Phase> random_first = {Phase::void_injection, Phase::repeller_injection,
+                                           Phase::grain_injection, Phase::crystal_injection,
+                                           Phase::repeller_injection};
+  const std::vector<Phase> grains_first = {Phase::grain_injection, Phase::crystal_injection,
+                                           Phase::repeller_injection};
+  EXPECT_EQ(phases(0.80, 0.84), random_first);
+  EXPECT_EQ(phases(0.8399, 0.84), random_first);
+  EXPECT_EQ(phases(0.84, 0.84), grains_first);
+  EXPECT_EQ(phases(0.89, 0.84), grains_first);
+  EXPECT_EQ(phases(0.89, 2.0), random_first);
+  // Watched in a run: no void or repeller injection before the grains.
+  const PeriodicBox box;
+  Rng rng(3);
+  Packing p = sample_mps(box, 0.02, rng);
+  std::vector<Phase> seen;
+  TuneOptions opt;
+  opt.on_progress = [&](const Progress& pr) {
+    if (seen.empty() || seen.back() != pr.phase) seen.push_back(pr.phase);
+    return true;
+  };
+  ASSERT_TRUE(tune(p, box, Target::area_fraction(0.85), rng, opt).reached);
+  ASSERT_FALSE(seen.empty());
+  EXPECT_EQ(seen.front(), Phase::grain_injection);
+  EXPECT_EQ(std::count(seen.begin(), seen.end(), Phase::void_injection), 0);
+  EXPECT_TRUE(valid(box, p, 3));
+}
+
 TEST(Tune, GrainPhasesHitExactCounts) {
   const PeriodicBox box;
   Rng rng(12);

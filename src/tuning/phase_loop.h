@@ -130,16 +130,18 @@ inline void check_direction(Method method, bool eject) {
 /// growth for varying radii (paper, 6); `angle` is null where angle injection is not
 /// defined (surfaces), and asking for it then throws InvalidInput. Past the repeller the
 /// automatic schedule grows many grains (grain_inject: no common orientation), and one
-/// crystal only where their boundaries stall it. On a `curved` surface
-/// a lattice cannot close, so the crystal phases do less: injection goes from void
+/// crystal only where their boundaries stall it; for a `target_eta` at or past
+/// TuneOptions::grains_from_sample the grains start from the packing as given. On a `curved`
+/// surface a lattice cannot close, so the crystal phases do less: injection goes from void
 /// injection straight to the crystal (which barely grows in the dense random packing
 /// repeller injection leaves, and the repeller phase is the slow one), and ejection runs
 /// the wide attractor before the crystal (after it, the crystal removes nothing; before
 /// it, its frozen lattice leaves the wide attractor less room).
 template <class P>
 std::vector<PhasePlan<P>> plan_for(const TuneOptions& o, bool eject, bool one_radius,
-                                   std::size_t (*angle)(P&, Rng&, std::size_t, const std::function<void()>&),
-                                   bool curved = false) {
+                                   std::size_t (*angle)(P&, Rng&, std::size_t,
+                                                        const std::function<void()>&),
+                                   bool curved = false, double target_eta = 0) {
   using Plan = PhasePlan<P>;
   const Plan void_phase{Phase::void_injection, &void_inject, nullptr, o.void_until};
   const Plan repeller_phase{
@@ -198,9 +200,9 @@ std::vector<PhasePlan<P>> plan_for(const TuneOptions& o, bool eject, bool one_ra
       }
       // Without crystal growth the repeller phase is the last: it runs until it stalls.
       if (!one_radius) return {void_phase, finish};
-      return curved ? std::vector<Plan>{quick_void_phase, crystal_phase, finish}
-                    : std::vector<Plan>{void_phase, repeller_phase, grain_phase,
-                                        crystal_after_grains, finish};
+      if (curved) return {quick_void_phase, crystal_phase, finish};
+      if (target_eta >= o.grains_from_sample) return {grain_phase, crystal_after_grains, finish};
+      return {void_phase, repeller_phase, grain_phase, crystal_after_grains, finish};
     case Method::void_injection: return alone(void_phase);
     case Method::repeller_injection: return alone(repeller_phase);
     case Method::crystal_injection: return {crystal_phase, finish};

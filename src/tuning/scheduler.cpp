@@ -43,12 +43,14 @@ TuneResult tune_in(Packing& packing, const Packing& entry, double area, const Ta
                    const TuneOptions& options, std::chrono::steady_clock::time_point t0) {
   const std::size_t goal = target_count(target, packing, area);
   const bool eject = goal < packing.size();
-  auto plans = detail::plan_for<Packing>(options, eject, packing.sizing() == nullptr, &angle_inject);
+  const double unit = density_unit(packing, area);
+  auto plans = detail::plan_for<Packing>(options, eject, packing.sizing() == nullptr, &angle_inject,
+                                         false, static_cast<double>(goal) / unit);
   if (packing.domain() && options.method == Method::automatic && mostly_boundary(packing)) {
     plans.push_back({eject ? Phase::boundary_ejection : Phase::boundary_injection, nullptr,
                      eject ? &boundary_sweep<-1> : &boundary_sweep<1>, 2.0});
   }
-  return detail::run_phases(packing, entry, density_unit(packing, area), goal, plans, rng, options,
+  return detail::run_phases(packing, entry, unit, goal, plans, rng, options,
                             options.after_operation, t0);
 }
 
