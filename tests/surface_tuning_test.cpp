@@ -329,6 +329,27 @@ TEST(SurfaceTune, CrystalStepsKeepTheInvariants) {
   }
 }
 
+// Grain injection on a surface (a grain per 40 disks: a dozen nuclei on the sphere), the
+// oracle after every step it commits, the count never past the target.
+TEST(SurfaceTune, GrainStepsKeepTheInvariants) {
+  const auto domain = surface_file("sphere.off");
+  Rng rng(5);
+  SurfacePacking packing = sample_mps(domain, SurfaceSizing::constant(0.08), rng);
+  const std::size_t start = packing.size();
+  int steps = 0;
+  auto check = [&] {
+    ++steps;
+    const auto report = surface_report(packing, 2);
+    ASSERT_TRUE(report.ok()) << "step " << steps << ": " << report.summary();
+  };
+  const std::size_t added = grain_inject(packing, rng, 120, check, 40);
+  EXPECT_GT(added, 0u);
+  EXPECT_LE(added, 120u);
+  EXPECT_GT(steps, 5);
+  EXPECT_EQ(packing.size(), start + added);
+  EXPECT_SURFACE_OK(packing);
+}
+
 // The resampled surface: the restricted Delaunay mesh of a tuned packing is a manifold
 // with the input's genus, close to it.
 TEST(SurfaceTune, TunedPackingsMeshTheSurface) {

@@ -186,11 +186,12 @@ std::size_t crystal_inject(Packing& packing, Rng& rng, std::size_t max_added,
 inline constexpr std::size_t kDisksPerGrain = 300;
 
 /// Grain injection (beyond the paper, which grows one crystal): crystal_inject from one
-/// nucleus for each `disks_per_grain` disks, far apart and at random orientations, all
-/// growing from one front until they meet. The packing keeps no common orientation
-/// (the unit box at r = 0.005 to eta 0.85: global psi6 0.09 against 0.62 for one
-/// crystal, docs/tuning.md); grain boundaries are looser than a crystal, so it stalls
-/// near eta 0.86, where one crystal reaches 0.90. Returns the number of disks added.
+/// nucleus for each `disks_per_grain` disks, far apart, their orientations spread evenly
+/// over the lattice's period, all growing from one front until they meet. The packing
+/// keeps no common orientation (the unit box at r = 0.005 to eta 0.85: global psi6
+/// 0.02-0.05 against 0.62 for one crystal, docs/tuning.md); grain boundaries are looser than a
+/// crystal, so it stalls near eta 0.86, where one crystal reaches 0.90. Returns the number of disks
+/// added.
 std::size_t grain_inject(Packing& packing, Rng& rng, std::size_t max_added,
                          const std::function<void()>& after_step = {},
                          std::size_t disks_per_grain = kDisksPerGrain);

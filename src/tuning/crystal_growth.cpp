@@ -13,9 +13,9 @@
 // immediately"). Attractors are taken in random order from the crystal's front (the
 // paper allows visiting the disks near attractors instead of all disks), so one crystal
 // grows over the domain. Grain injection (beyond the paper; issue #19) seeds many
-// crystals at once, far apart and each at its own random orientation, and grows them
-// together from one front: they meet in grain boundaries, and the packing keeps no
-// common orientation. The batch-and-commit loop is crystal_grow.h's.
+// crystals at once, far apart, at orientations spread evenly over the lattice's period,
+// and grows them together from one front: they meet in grain boundaries, and the
+// packing keeps no common orientation. The batch-and-commit loop is crystal_grow.h's.
 #include <algorithm>
 #include <cmath>
 
