@@ -147,7 +147,7 @@ std::vector<PhasePlan<P>> plan_for(const TuneOptions& o, bool eject, bool one_ra
   const Plan repeller_phase{
       Phase::repeller_injection, &repeller_inject, nullptr, o.repeller_until, false, true};
   const Plan crystal_phase{Phase::crystal_injection, nullptr, &crystal_inject, 2.0};
-  // Many grains at random orientations, then, where their boundaries leave the target
+  // Many grains at orientations spread evenly, then, where their boundaries leave the target
   // out of reach (near eta 0.86), one crystal grown through them, thawed.
   const Plan grain_phase{
       Phase::grain_injection, nullptr,
