@@ -124,8 +124,11 @@ TEST(FeatureSizing, CornersGetRoom) {
         const double r = s(v);
         EXPECT_LE(r, 0.45 * distance(v, loop[(i + 1) % loop.size()]) * (1 + 1e-9));
         EXPECT_LE(r, 0.45 * distance(v, loop[(i + loop.size() - 1) % loop.size()]) * (1 + 1e-9));
-        for (const BoundarySegment& seg : d->segments())
-          if (!(seg.a == v) && !(seg.b == v)) EXPECT_LE(r, 0.45 * point_segment(v, seg.a, seg.b) * (1 + 1e-9));
+        for (const BoundarySegment& seg : d->segments()) {
+          if (!(seg.a == v) && !(seg.b == v)) {
+            EXPECT_LE(r, 0.45 * point_segment(v, seg.a, seg.b) * (1 + 1e-9));
+          }
+        }
       }
   }
 }
