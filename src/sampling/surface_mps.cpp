@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdint>
 #include <map>
+#include <utility>
 
 #include "../voids/final_check.h"
 #include "curve_layout.h"
@@ -188,20 +189,26 @@ void sample_curves(SurfacePacking& packing, Rng& rng) {
 // in cache most of what it reads; then the others, in their own order, are kept where
 // still uncovered. At 10^6 disks a query at a random place waits on several cache
 // misses, and most darts fall in the first pass. The same sample bit for bit.
-void keep_uncovered(SurfacePacking& packing, const std::vector<SurfacePoint>& darts,
+void keep_uncovered(SurfacePacking& packing, std::vector<SurfacePoint> darts,
                     const std::vector<std::uint32_t>& group, std::size_t groups) {
   std::vector<std::uint32_t> start(groups + 1, 0);  // a counting sort by group
   for (const std::uint32_t g : group) ++start[g + 1];
   for (std::size_t g = 0; g < groups; ++g) start[g + 1] += start[g];
-  std::vector<std::uint32_t> by_group(darts.size());
-  for (std::size_t k = 0; k < darts.size(); ++k)
-    by_group[start[group[k]]++] = static_cast<std::uint32_t>(k);
-  std::vector<std::uint32_t> open;
-  for (const std::uint32_t k : by_group)
-    if (!packing.covered(darts[k])) open.push_back(k);
-  std::sort(open.begin(), open.end());
-  for (const std::uint32_t k : open)
-    if (!packing.covered(darts[k])) packing.insert(darts[k]);
+  std::vector<std::uint32_t> rank(darts.size());   // by group: each dart's place in the throw
+  std::vector<SurfacePoint> placed(darts.size());  // by group: the darts
+  for (std::size_t k = 0; k < darts.size(); ++k) {
+    const std::uint32_t at = start[group[k]]++;
+    rank[at] = static_cast<std::uint32_t>(k);
+    placed[at] = darts[k];
+  }
+  darts = {};
+  std::vector<std::uint32_t> open;  // places in `placed` of the darts no disk covered
+  for (std::uint32_t at = 0; at < placed.size(); ++at)
+    if (!packing.covered(placed[at])) open.push_back(at);
+  std::sort(open.begin(), open.end(),
+            [&](std::uint32_t a, std::uint32_t b) { return rank[a] < rank[b]; });
+  for (const std::uint32_t at : open)
+    if (!packing.covered(placed[at])) packing.insert(placed[at]);
 }
 
 // A cell: one of the 4^level similar triangles into which halving every edge `level`
@@ -325,7 +332,7 @@ void dart_level(SurfacePacking& packing, const Cells& cells, double side, std::v
       darts[k] = cells.dart(active[cell_of[k]], rng);
     }
   }
-  keep_uncovered(packing, darts, cell_of, active.size());
+  keep_uncovered(packing, std::move(darts), cell_of, active.size());
   std::vector<Cell> next;
   DiskId last = kNoDisk;
   for (const Cell& c : active) {
