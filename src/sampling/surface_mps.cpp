@@ -202,13 +202,16 @@ void keep_uncovered(SurfacePacking& packing, std::vector<SurfacePoint> darts,
     placed[at] = darts[k];
   }
   darts = {};
-  std::vector<std::uint32_t> open;  // places in `placed` of the darts no disk covered
+  // The darts no disk covered, each as its rank in the throw (high half) and its place
+  // in `placed` (low half), so that sorting the numbers puts them in the throw's order.
+  std::vector<std::uint64_t> open;
   for (std::uint32_t at = 0; at < placed.size(); ++at)
-    if (!packing.covered(placed[at])) open.push_back(at);
-  std::sort(open.begin(), open.end(),
-            [&](std::uint32_t a, std::uint32_t b) { return rank[a] < rank[b]; });
-  for (const std::uint32_t at : open)
-    if (!packing.covered(placed[at])) packing.insert(placed[at]);
+    if (!packing.covered(placed[at])) open.push_back(std::uint64_t{rank[at]} << 32 | at);
+  std::sort(open.begin(), open.end());
+  for (const std::uint64_t key : open) {
+    const SurfacePoint& q = placed[static_cast<std::uint32_t>(key)];
+    if (!packing.covered(q)) packing.insert(q);
+  }
 }
 
 // A cell: one of the 4^level similar triangles into which halving every edge `level`
