@@ -52,7 +52,7 @@ checks() {
     -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" \
     -DDISKTUNE_SANITIZE=ON -DDISKTUNE_FUZZ=ON -DDISKTUNE_BUILD_CLI=OFF -DDISKTUNE_BUILD_BENCH=OFF -DDISKTUNE_BUILD_PYTHON=OFF \
     -DDISKTUNE_INSTALL=OFF "${launcher[@]}"
-  cmake --build "$check" -j2 --target disktune_tests disktune_fuzz
+  cmake --build "$check" -j2 --target disktune_tests disktune_gmsh_tests disktune_fuzz
   # The unit tests but the slowest sweeps (each >= 4 s in Release, about ten times that
   # under the sanitizers), which the Release run above covers, and the layering checks
   # (Python).

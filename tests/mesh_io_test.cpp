@@ -1,10 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Mesh files: OFF, OBJ, legacy VTK, VTU, MSH (read by Gmsh itself) and binary STL read
-// back to the same numbers; unknown extensions are refused before anything is written;
-// the SVG picture.
+// Mesh files: OFF, OBJ, legacy VTK, VTU, MSH (read by Gmsh itself, gmsh_reader_test.cpp) and binary
+// STL read back to the same numbers; unknown extensions are refused before anything is written; the
+// SVG picture.
 #include "disktune/mesh_io.h"
 
-#include <gmsh.h>
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -221,91 +220,6 @@ TEST(MeshIo, VtuHoldsPointsCellsLinesAndDiskIdsInBase64) {
   const std::vector<double> ids = vtu_array(periodic, "Name=\"disk_id\"");
   ASSERT_EQ(ids.size(), m.vertex_disk.size());
   for (std::size_t i = 0; i < ids.size(); ++i) EXPECT_EQ(ids[i], m.vertex_disk[i]);
-}
-
-// Gmsh, quiet, for the life of a test.
-struct GmshSession {
-  GmshSession() {
-    gmsh::initialize(0, nullptr, false);
-    gmsh::option::setNumber("General.Terminal", 0);
-  }
-  ~GmshSession() { gmsh::finalize(); }
-  GmshSession(const GmshSession&) = delete;
-  GmshSession& operator=(const GmshSession&) = delete;
-};
-
-TEST(MeshIo, GmshReadsTheMshBack) {
-  TempDir dir;
-  const SurfaceMesh tetra = tetrahedron();
-  write_surface_mesh(dir.file("t.msh"), tetra);
-  const GmshSession gmsh_session;
-  ASSERT_NO_THROW(gmsh::open(dir.file("t.msh")));
-  std::vector<std::size_t> tags;
-  std::vector<double> xyz, parametric;
-  gmsh::model::mesh::getNodes(tags, xyz, parametric);
-  ASSERT_EQ(tags.size(), 4u);
-  for (std::size_t k = 0; k < 4; ++k) {
-    EXPECT_EQ((Vec3{xyz[3 * k], xyz[3 * k + 1], xyz[3 * k + 2]}), tetra.vertices[tags[k] - 1]);
-  }
-  std::vector<std::size_t> element_tags, nodes;
-  gmsh::model::mesh::getElementsByType(2, element_tags, nodes);
-  ASSERT_EQ(nodes.size(), 12u);
-  for (std::size_t t = 0; t < 4; ++t)
-    for (int k = 0; k < 3; ++k) EXPECT_EQ(nodes[3 * t + k] - 1, tetra.triangles[t][k]);
-  std::vector<std::size_t> line_tags, line_nodes;  // fresh: the call does not clear its outputs
-  gmsh::model::mesh::getElementsByType(1, line_tags, line_nodes);
-  EXPECT_EQ(line_nodes, (std::vector<std::size_t>{1, 2, 2, 3}));
-  gmsh::vectorpair groups;
-  gmsh::model::getPhysicalGroups(groups);
-  EXPECT_EQ(groups, (gmsh::vectorpair{{1, 2}, {2, 1}}));
-  std::string name;
-  gmsh::model::getPhysicalName(2, 1, name);
-  EXPECT_EQ(name, "surface");
-  gmsh::model::getPhysicalName(1, 2, name);
-  EXPECT_EQ(name, "feature edges");
-}
-
-// A planar domain's mesh names its boundary loops: Gmsh finds each loop's edges, in
-// order, in the physical group of its name (checked against the loops of disks the
-// mesh was made from), and every triangle in "domain".
-TEST(MeshIo, GmshFindsThePlanarBoundaryLoopsByName) {
-  TempDir dir;
-  const auto domain = std::make_shared<const PlanarDomain>(
-      std::vector<Vec2>{{0, 0}, {1, 0}, {1, 1}, {0, 1}},
-      std::vector<std::vector<Vec2>>{{{0.2, 0.2}, {0.2, 0.4}, {0.4, 0.4}, {0.4, 0.2}},
-                                     {{0.6, 0.6}, {0.6, 0.8}, {0.8, 0.8}, {0.8, 0.6}}});
-  Rng rng(3);
-  Packing packing = sample_mps(domain, 0.05, rng);
-  const BoundaryLoops loops = boundary_loops(packing, *domain);
-  const PlanarMesh mesh = constrained_delaunay(packing, loops);
-  write_mesh(dir.file("p.msh"), mesh);
-  const GmshSession gmsh_session;
-  ASSERT_NO_THROW(gmsh::open(dir.file("p.msh")));
-  std::vector<DiskId> disk_of_node(mesh.vertex_disk);  // node k + 1 is vertex k
-  const char* names[] = {"outer boundary", "hole 1", "hole 2"};
-  ASSERT_EQ(loops.size(), 3u);
-  for (std::size_t k = 0; k < loops.size(); ++k) {
-    SCOPED_TRACE(names[k]);
-    std::string name;
-    gmsh::model::getPhysicalName(1, static_cast<int>(k) + 2, name);
-    EXPECT_EQ(name, names[k]);
-    std::vector<int> curves;
-    gmsh::model::getEntitiesForPhysicalGroup(1, static_cast<int>(k) + 2, curves);
-    ASSERT_EQ(curves.size(), 1u);
-    std::vector<std::size_t> tags, nodes;
-    gmsh::model::mesh::getElementsByType(1, tags, nodes, curves[0]);
-    ASSERT_EQ(nodes.size(), 2 * loops[k].size());
-    for (std::size_t i = 0; i < loops[k].size(); ++i) {
-      EXPECT_EQ(disk_of_node[nodes[2 * i] - 1], loops[k][i]);
-      EXPECT_EQ(disk_of_node[nodes[2 * i + 1] - 1], loops[k][(i + 1) % loops[k].size()]);
-    }
-  }
-  std::vector<int> surfaces;
-  gmsh::model::getEntitiesForPhysicalGroup(2, 1, surfaces);
-  ASSERT_EQ(surfaces.size(), 1u);
-  std::vector<std::size_t> tags, nodes;
-  gmsh::model::mesh::getElementsByType(2, tags, nodes, surfaces[0]);
-  EXPECT_EQ(nodes.size(), 3 * mesh.triangles.size());
 }
 
 // Triangle's .node/.ele pair, read back by hand: numbered from 1, every coordinate

@@ -4,9 +4,8 @@
 // in two triangles but those on the sides), the side nodes found by scanning all nodes
 // pair up exactly across the period, every fiber-matrix interface node lies on its
 // fiber's circle, each triangle's material agrees with where its centroid lies, and each
-// fiber's triangles cover its disk but the polygon's sagitta. The files are read back by
-// Gmsh's own reader and by a small Abaqus reader written here.
-#include <gmsh.h>
+// fiber's triangles cover its disk but the polygon's sagitta. The .inp is read back by a
+// small Abaqus reader written here, the .msh by Gmsh's own (rve_msh_gmsh_test.cpp).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -299,61 +298,6 @@ TEST(RveMesh, RefusesWhatItCannotMesh) {
   EXPECT_THROW(check_rve_mesh(asked, {}), InvalidInput);  // gap 0
   asked.gap = 0.02;
   EXPECT_NO_THROW(check_rve_mesh(asked, {}));
-}
-
-// The .msh read back by Gmsh itself: groups, periodic links and their node pairs.
-TEST(RveMesh, GmshReadsTheMshBack) {
-  const Rve rve = make(0.6, 3);
-  const RveMesh mesh = mesh_rve(rve);
-  const std::string path = (std::filesystem::temp_directory_path() / "disktune_rve_mesh_test.msh").string();
-  write_rve_msh(path, mesh);
-  gmsh::initialize(0, nullptr, false);
-  gmsh::option::setNumber("General.Terminal", 0);
-  gmsh::open(path);
-  std::vector<std::size_t> node_tags;
-  std::vector<double> xyz, parametric;
-  gmsh::model::mesh::getNodes(node_tags, xyz, parametric);
-  EXPECT_EQ(node_tags.size(), mesh.nodes.size());
-  std::vector<int> types;
-  std::vector<std::vector<std::size_t>> tags, nodes;
-  gmsh::model::mesh::getElements(types, tags, nodes, 2);
-  std::size_t triangles = 0;
-  for (const auto& t : tags) triangles += t.size();
-  EXPECT_EQ(triangles, mesh.triangles.size());
-  gmsh::vectorpair groups;
-  gmsh::model::getPhysicalGroups(groups);
-  EXPECT_EQ(groups.size(), 7 + rve.centers.size());
-  std::map<std::string, std::size_t> group_size;
-  for (const auto& [dim, tag] : groups) {
-    std::string name;
-    gmsh::model::getPhysicalName(dim, tag, name);
-    std::vector<std::size_t> in;
-    std::vector<double> coords;
-    gmsh::model::mesh::getNodesForPhysicalGroup(dim, tag, in, coords);
-    group_size[name] = in.size();
-  }
-  EXPECT_EQ(group_size["corners"], 4u);
-  EXPECT_EQ(group_size["left"], mesh.left.size() + 2);
-  EXPECT_EQ(group_size["top"], mesh.top.size() + 2);
-  EXPECT_EQ(group_size.count("fiber " + std::to_string(rve.centers.size())), 1u);
-  // Right = left moved by W, top = bottom moved by H, node for node.
-  for (const int copy : {2, 4}) {
-    int master = 0;
-    std::vector<std::size_t> copies, masters;
-    std::vector<double> affine;
-    gmsh::model::mesh::getPeriodicNodes(1, copy, master, copies, masters, affine);
-    EXPECT_EQ(master, copy - 1);
-    EXPECT_EQ(copies.size(), (copy == 2 ? mesh.left.size() : mesh.bottom.size()) + 2);
-    for (std::size_t i = 0; i < copies.size(); ++i) {
-      std::vector<double> a, b, param;
-      gmsh::model::mesh::getNode(copies[i], a, param);
-      gmsh::model::mesh::getNode(masters[i], b, param);
-      EXPECT_EQ(a[0] - b[0], copy == 2 ? mesh.width : 0.0);
-      EXPECT_EQ(a[1] - b[1], copy == 2 ? 0.0 : mesh.height);
-    }
-  }
-  gmsh::finalize();
-  std::filesystem::remove(path);
 }
 
 // The .inp by a reader written here: every node and element, the sets' sizes, and the

@@ -3,8 +3,8 @@
 // the W x H cell in which every triangle lies in the matrix or in one fiber, the fiber
 // boundaries are polygons of a chosen number of segments per circle, and the nodes on
 // opposite sides of the cell match (same count, coordinates equal up to the period), as
-// periodic boundary conditions need. Gmsh (its C++ API, OpenCASCADE geometry) does the
-// meshing; nothing of it shows here.
+// periodic boundary conditions need. Gmsh (its C API, OpenCASCADE geometry) does the
+// meshing; nothing of it shows here, and its library is loaded only when a mesh is made.
 #pragma once
 
 #include <array>
@@ -61,7 +61,8 @@ void check_rve_mesh(const RveSpec& rve, const RveMeshSpec& mesh);
 
 /// Meshes the cell of `rve` (fiber k of diameter rve.diameters[k]). Throws InvalidInput
 /// as check_rve_mesh does, when a fiber touches a cell side, or without one diameter per
-/// fiber; a std::runtime_error when Gmsh fails.
+/// fiber; IoError when Gmsh's library (the soname disktune was built with) cannot be
+/// loaded; a std::runtime_error when Gmsh fails.
 RveMesh mesh_rve(const Rve& rve, const RveMeshSpec& spec = {});
 
 /// Gmsh's MSH 4.1 (ASCII) of the mesh: entities for the corners, the four sides and

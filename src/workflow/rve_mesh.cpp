@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The fiber RVE's finite-element mesh through Gmsh's C++ API (rve_mesh.h). Gmsh builds
+// The fiber RVE's finite-element mesh through Gmsh's C API (rve_mesh.h; the library loaded
+// on first use, gmsh_library.h). Gmsh builds
 // the geometry with OpenCASCADE: the cell's rectangle fragmented by every fiber image
 // that overlaps it, the pieces outside the cell dropped, the right and top sides
 // declared periodic copies of the left and bottom, then 2D frontal-Delaunay meshing.
@@ -7,8 +8,6 @@
 // exactly onto the cell, and its shape measured. Gmsh works in units of the fiber
 // diameter: OpenCASCADE's tolerances are absolute (1e-7), and fibers of 7e-6 m are common.
 #include "disktune/rve_mesh.h"
-
-#include <gmsh.h>
 
 #include <algorithm>
 #include <cmath>
@@ -19,10 +18,11 @@
 #include <unordered_map>
 #include <unordered_set>
 
-#include "disktune/errors.h"
-#include "disktune/resources.h"
 #include "../analysis/mesh_shape.h"
 #include "../io/number_text.h"
+#include "disktune/errors.h"
+#include "disktune/resources.h"
+#include "gmsh_library.h"
 #include "rve_polydisperse.h"
 
 namespace disktune {
@@ -43,11 +43,15 @@ std::string number(double x) {
 // always ends (its destructor also runs when Gmsh throws).
 std::mutex gmsh_mutex;
 struct GmshSession {
+  const detail::GmshApi& gmsh = detail::gmsh_api();
   GmshSession() {
-    gmsh::initialize(0, nullptr, false);
-    gmsh::option::setNumber("General.Terminal", 0);  // errors come back as exceptions
+    detail::gmsh_call(gmsh.initialize, 0, nullptr, 0);
+    detail::gmsh_call(gmsh.set_number, "General.Terminal", 0.0);  // errors come back as flags
   }
-  ~GmshSession() { gmsh::finalize(); }
+  ~GmshSession() {
+    int ignored = 0;
+    gmsh.finalize(&ignored);
+  }
   GmshSession(const GmshSession&) = delete;
   GmshSession& operator=(const GmshSession&) = delete;
 };
@@ -105,17 +109,24 @@ struct Box {
 };
 Box bounding_box(int dim, int tag) {
   Box b{};
-  gmsh::model::getBoundingBox(dim, tag, b.x0, b.y0, b.z0, b.x1, b.y1, b.z1);
+  detail::gmsh_call(detail::gmsh_api().bounding_box, dim, tag, &b.x0, &b.y0, &b.z0, &b.x1, &b.y1,
+                    &b.z1);
   return b;
 }
+
+// (dim, tag) pairs as Gmsh's C API lists them: dim, tag, dim, tag, ...
+using DimTags = std::vector<int>;
 
 // The curves lying on the segment (x0, y0)..(x1, y1) of the cell's boundary.
 std::vector<int> side_curves(double x0, double y0, double x1, double y1) {
   constexpr double eps = 1e-6;  // Gmsh's boxes of OpenCASCADE shapes are 1e-7 wider
-  gmsh::vectorpair found;
-  gmsh::model::getEntitiesInBoundingBox(x0 - eps, y0 - eps, -eps, x1 + eps, y1 + eps, eps, found, 1);
+  int* found = nullptr;
+  std::size_t n = 0;
+  detail::gmsh_call(detail::gmsh_api().entities_in_box, x0 - eps, y0 - eps, -eps, x1 + eps,
+                    y1 + eps, eps, &found, &n, 1);
+  const DimTags curves = detail::gmsh_take(found, n);
   std::vector<int> tags;
-  for (const auto& [dim, tag] : found) tags.push_back(tag);
+  for (std::size_t i = 1; i < curves.size(); i += 2) tags.push_back(curves[i]);
   return tags;
 }
 
@@ -139,7 +150,9 @@ void make_periodic(const std::vector<int>& copies, const std::vector<int>& maste
     throw std::runtime_error("Gmsh: the curves on opposite sides of the cell do not pair up (" +
                              std::to_string(copies.size()) + " against " + std::to_string(masters.size()) + ")");
   }
-  gmsh::model::mesh::setPeriodic(1, copy_tags, master_tags, {1, 0, 0, dx, 0, 1, 0, dy, 0, 0, 1, 0, 0, 0, 0, 1});
+  double affine[16] = {1, 0, 0, dx, 0, 1, 0, dy, 0, 0, 1, 0, 0, 0, 0, 1};
+  detail::gmsh_call(detail::gmsh_api().set_periodic, 1, copy_tags.data(), copy_tags.size(),
+                    master_tags.data(), master_tags.size(), affine, std::size_t{16});
 }
 
 // Where a fiber's circle should begin (OpenCASCADE puts a vertex there, and Gmsh a node):
@@ -169,10 +182,12 @@ double seam_angle(double dx, double dy, double radius) {
 // Builds and meshes the cell in units of the diameter; returns, per surface, its
 // material (0 matrix, k + 1 fiber k).
 std::unordered_map<int, std::uint32_t> build_and_mesh(const Rve& rve, const RveMeshSpec& spec, double element_size) {
+  const detail::GmshApi& gmsh = detail::gmsh_api();
+  using detail::gmsh_call;
   const double unit = rve.diameter, w = rve.cell.width() / unit, h = rve.cell.height() / unit;
-  gmsh::model::add("rve");
-  const int cell = gmsh::model::occ::addRectangle(0, 0, 0, w, h);
-  gmsh::vectorpair disks;
+  gmsh_call(gmsh.add_model, "rve");
+  DimTags cell{2, gmsh_call(gmsh.add_rectangle, 0.0, 0.0, 0.0, w, h, -1, 0.0)};
+  DimTags disks;
   std::vector<std::uint32_t> fiber_of_disk;
   for (std::size_t k = 0; k < rve.centers.size(); ++k) {
     const double cx = rve.centers[k].x / unit, cy = rve.centers[k].y / unit, radius = rve.diameters[k] / 2 / unit;
@@ -180,33 +195,41 @@ std::unordered_map<int, std::uint32_t> build_and_mesh(const Rve& rve, const RveM
     for (const double x : {cx - w, cx, cx + w}) {
       for (const double y : {cy - h, cy, cy + h}) {
         if (x + radius <= 0 || x - radius >= w || y + radius <= 0 || y - radius >= h) continue;
-        const int disk = gmsh::model::occ::addDisk(x, y, 0, radius, radius);
-        if (seam != 0) gmsh::model::occ::rotate({{2, disk}}, x, y, 0, 0, 0, 1, seam);
-        disks.emplace_back(2, disk);
+        int disk[2] = {2, gmsh_call(gmsh.add_disk, x, y, 0.0, radius, radius, -1)};
+        if (seam != 0) gmsh_call(gmsh.rotate, disk, std::size_t{2}, x, y, 0.0, 0.0, 0.0, 1.0, seam);
+        disks.insert(disks.end(), disk, disk + 2);
         fiber_of_disk.push_back(static_cast<std::uint32_t>(k + 1));
       }
     }
   }
-  gmsh::vectorpair pieces;
-  std::vector<gmsh::vectorpair> pieces_of;  // [0]: the cell's, [1 + i]: disk i's
-  gmsh::model::occ::fragment({{2, cell}}, disks, pieces, pieces_of);
+  int* pieces = nullptr;
+  int** pieces_of_data = nullptr;
+  std::size_t pieces_n = 0, *pieces_of_n = nullptr, inputs = 0;
+  gmsh_call(gmsh.fragment, cell.data(), cell.size(), disks.data(), disks.size(), &pieces, &pieces_n,
+            &pieces_of_data, &pieces_of_n, &inputs, -1, 1, 1);
+  detail::gmsh_take(pieces, pieces_n);
+  // [0]: the cell's pieces, [1 + i]: disk i's.
+  const std::vector<DimTags> pieces_of = detail::gmsh_take(pieces_of_data, pieces_of_n, inputs);
+  if (pieces_of.size() != 1 + fiber_of_disk.size())
+    throw std::runtime_error("Gmsh: fragments of unexpected inputs");
   // A piece is in the cell when it is one of the cell's pieces; a fiber's when it is
   // also one of a disk's; the disks' other pieces lie outside and go.
   std::unordered_map<int, std::uint32_t> material;
-  for (const auto& [dim, tag] : pieces_of.at(0)) material[tag] = 0;
-  gmsh::vectorpair outside;
-  for (std::size_t i = 0; i < disks.size(); ++i) {
-    for (const auto& piece : pieces_of.at(i + 1)) {
-      const auto in_cell = material.find(piece.second);
+  for (std::size_t j = 1; j < pieces_of[0].size(); j += 2) material[pieces_of[0][j]] = 0;
+  DimTags outside;
+  for (std::size_t i = 0; i < fiber_of_disk.size(); ++i) {
+    const DimTags& of_disk = pieces_of[i + 1];
+    for (std::size_t j = 1; j < of_disk.size(); j += 2) {
+      const auto in_cell = material.find(of_disk[j]);
       if (in_cell != material.end()) {
         in_cell->second = fiber_of_disk[i];
       } else {
-        outside.push_back(piece);
+        outside.insert(outside.end(), {of_disk[j - 1], of_disk[j]});
       }
     }
   }
-  gmsh::model::occ::remove(outside, true);
-  gmsh::model::occ::synchronize();
+  gmsh_call(gmsh.remove, outside.data(), outside.size(), 1);
+  gmsh_call(gmsh.synchronize);
   make_periodic(side_curves(w, 0, w, h), side_curves(0, 0, 0, h), w, 0);
   make_periodic(side_curves(0, h, w, h), side_curves(0, 0, w, 0), 0, h);
   // Elements no longer than the smallest fiber's segment give every fiber its segments;
@@ -214,19 +237,27 @@ std::unordered_map<int, std::uint32_t> build_and_mesh(const Rve& rve, const RveM
   const double smallest = *std::min_element(rve.diameters.begin(), rve.diameters.end());
   const double segment = kPi * smallest / unit / static_cast<double>(spec.fiber_segments);
   if (element_size / unit > segment * (1 + 1e-9)) {
-    gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", static_cast<double>(spec.fiber_segments));
+    gmsh_call(gmsh.set_number, "Mesh.MeshSizeFromCurvature",
+              static_cast<double>(spec.fiber_segments));
   }
-  gmsh::option::setNumber("Mesh.MeshSizeMax", element_size / unit);
-  gmsh::option::setNumber("Mesh.Algorithm", 6);  // frontal-Delaunay: the best shaped triangles
-  gmsh::model::mesh::generate(2);
+  gmsh_call(gmsh.set_number, "Mesh.MeshSizeMax", element_size / unit);
+  gmsh_call(gmsh.set_number, "Mesh.Algorithm", 6.0);  // frontal-Delaunay: the best shaped triangles
+  gmsh_call(gmsh.generate, 2);
   return material;
 }
 
 // Reads Gmsh's mesh (coordinates back in the caller's units) into `out`.
 void read_mesh(const std::unordered_map<int, std::uint32_t>& material, double unit, RveMesh& out) {
-  std::vector<std::size_t> node_tags;
-  std::vector<double> xyz, parametric;
-  gmsh::model::mesh::getNodes(node_tags, xyz, parametric, -1, -1, false, false);
+  const detail::GmshApi& gmsh = detail::gmsh_api();
+  std::size_t *tags_data = nullptr, tags_n = 0, xyz_n = 0, parametric_n = 0;
+  double *xyz_data = nullptr, *parametric_data = nullptr;
+  detail::gmsh_call(gmsh.nodes, &tags_data, &tags_n, &xyz_data, &xyz_n, &parametric_data,
+                    &parametric_n, -1, -1, 0, 0);
+  const std::vector<std::size_t> node_tags = detail::gmsh_take(tags_data, tags_n);
+  const std::vector<double> xyz = detail::gmsh_take(xyz_data, xyz_n);
+  detail::gmsh_take(parametric_data, parametric_n);
+  if (xyz.size() != 3 * node_tags.size())
+    throw std::runtime_error("Gmsh: node coordinates do not match the nodes");
   std::unordered_map<std::size_t, std::uint32_t> index_of;
   std::vector<Vec2> gmsh_nodes(node_tags.size());
   for (std::size_t i = 0; i < node_tags.size(); ++i) {
@@ -235,13 +266,26 @@ void read_mesh(const std::unordered_map<int, std::uint32_t>& material, double un
   }
   // Only the nodes triangles use, in the order they first appear.
   std::vector<std::uint32_t> renumber(node_tags.size(), UINT32_MAX);
-  gmsh::vectorpair surfaces;
-  gmsh::model::getEntities(surfaces, 2);
-  for (const auto& [dim, tag] : surfaces) {
+  int* surfaces_data = nullptr;
+  std::size_t surfaces_n = 0;
+  detail::gmsh_call(gmsh.entities, &surfaces_data, &surfaces_n, 2);
+  const DimTags surfaces = detail::gmsh_take(surfaces_data, surfaces_n);
+  for (std::size_t s = 1; s < surfaces.size(); s += 2) {
+    const int tag = surfaces[s];
     const std::uint32_t kind = material.at(tag);
-    std::vector<int> types;
-    std::vector<std::vector<std::size_t>> element_tags, element_nodes;
-    gmsh::model::mesh::getElements(types, element_tags, element_nodes, 2, tag);
+    int* types_data = nullptr;
+    std::size_t types_n = 0, **element_tags_data = nullptr, *element_tags_n = nullptr,
+                element_tags_nn = 0;
+    std::size_t **element_nodes_data = nullptr, *element_nodes_n = nullptr, element_nodes_nn = 0;
+    detail::gmsh_call(gmsh.elements, &types_data, &types_n, &element_tags_data, &element_tags_n,
+                      &element_tags_nn, &element_nodes_data, &element_nodes_n, &element_nodes_nn, 2,
+                      tag);
+    const std::vector<int> types = detail::gmsh_take(types_data, types_n);
+    detail::gmsh_take(element_tags_data, element_tags_n, element_tags_nn);
+    const std::vector<std::vector<std::size_t>> element_nodes =
+        detail::gmsh_take(element_nodes_data, element_nodes_n, element_nodes_nn);
+    if (element_nodes.size() != types.size())
+      throw std::runtime_error("Gmsh: elements do not match their types");
     for (std::size_t t = 0; t < types.size(); ++t) {
       if (types[t] != 2) throw std::runtime_error("Gmsh: a surface element that is not a 3-node triangle");
       const std::vector<std::size_t>& corners = element_nodes[t];
@@ -371,12 +415,8 @@ RveMesh mesh_rve(const Rve& rve, const RveMeshSpec& spec) {
   out.side_clearance = clearance;
   {
     const std::lock_guard<std::mutex> lock(gmsh_mutex);
-    try {
-      const GmshSession session;
-      read_mesh(build_and_mesh(rve, spec, element_size), rve.diameter, out);
-    } catch (const std::string& gmsh_error) {  // what the Gmsh API throws
-      throw std::runtime_error("Gmsh: " + gmsh_error);
-    }
+    const GmshSession session;
+    read_mesh(build_and_mesh(rve, spec, element_size), rve.diameter, out);
   }
   pair_sides(out);
   measure_shape(out);
