@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <limits>
@@ -409,7 +410,48 @@ TEST(RestrictedDelaunay, HausdorffIsZeroForTheSurfaceItselfAndSeesAScaling) {
   EXPECT_GT(d, 0.045);
   EXPECT_LT(d, 0.055);
   EXPECT_EQ(d, hausdorff_distance(scaled, sphere, 5000, 1));  // same seed, same answer
+  for (const unsigned threads : {0u, 2u, 3u})
+    EXPECT_EQ(d, hausdorff_distance(scaled, sphere, 5000, 1, threads));
   EXPECT_THROW(hausdorff_distance(SurfaceMesh{sphere.vertices(), {}}, sphere, 10, 1), InvalidInput);
+}
+
+// Distance from x to triangle abc, written apart: the plane's foot where it falls
+// inside, else the nearest of the three sides.
+double distance_to_triangle(Vec3 x, Vec3 a, Vec3 b, Vec3 c) {
+  const auto to_segment = [&](Vec3 p, Vec3 q) {
+    const double s = std::clamp(dot(x - p, q - p) / squared_norm(q - p), 0.0, 1.0);
+    return norm(x - (p + (q - p) * s));
+  };
+  const Vec3 n = cross(b - a, c - a) * (1 / norm(cross(b - a, c - a)));
+  const Vec3 foot = x - n * dot(x - a, n);
+  const bool inside = dot(cross(b - a, foot - a), n) >= 0 && dot(cross(c - b, foot - b), n) >= 0 &&
+                      dot(cross(a - c, foot - c), n) >= 0;
+  return inside ? std::abs(dot(x - a, n))
+                : std::min({to_segment(a, b), to_segment(b, c), to_segment(c, a)});
+}
+
+// One vertex of the surface pulled out: the distance is that of its apex from the
+// surface (the farthest point of its fan), found here by brute force over every
+// triangle; the same on any number of threads.
+TEST(RestrictedDelaunay, HausdorffSeesOneVertexPulledOut) {
+  const SurfaceDomain sphere = surface("sphere.off");
+  SurfaceMesh spiked{sphere.vertices(), {}};
+  for (const auto& t : sphere.triangles()) {
+    spiked.triangles.push_back({static_cast<std::uint32_t>(t[0]), static_cast<std::uint32_t>(t[1]),
+                                static_cast<std::uint32_t>(t[2])});
+  }
+  const Vec3 center = (sphere.bbox_min() + sphere.bbox_max()) * 0.5;
+  for (const std::size_t v : {std::size_t{0}, sphere.vertices().size() - 1}) {
+    SCOPED_TRACE(v);
+    SurfaceMesh m = spiked;
+    m.vertices[v] = center + (m.vertices[v] - center) * 1.3;
+    double apex = std::numeric_limits<double>::infinity();
+    const auto& p = sphere.vertices();
+    for (const auto& t : sphere.triangles())
+      apex = std::min(apex, distance_to_triangle(m.vertices[v], p[t[0]], p[t[1]], p[t[2]]));
+    for (const unsigned threads : {1u, 2u, 3u})
+      EXPECT_NEAR(hausdorff_distance(m, sphere, 3000, 7, threads), apex, 1e-12);
+  }
 }
 
 // --- check_surface_mesh on hand-made meshes ---

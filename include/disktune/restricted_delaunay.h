@@ -92,9 +92,10 @@ SurfaceMesh restricted_delaunay(const SurfacePacking& packing, Coverage coverage
 
 /// The symmetric Hausdorff distance between the mesh's triangles and the surface,
 /// approximated from below: `samples_per_mesh` area-weighted random points on each (and
-/// all vertices of each) measured to the other's closest point. Same seed, same result.
+/// all vertices of each) measured to the other's closest point, on `threads` threads
+/// (0: one per core). Same seed, same result, whatever the number of threads.
 /// Throws InvalidInput for a mesh without triangles.
 double hausdorff_distance(const SurfaceMesh& mesh, const SurfaceDomain& surface,
-                          std::size_t samples_per_mesh, std::uint64_t seed);
+                          std::size_t samples_per_mesh, std::uint64_t seed, unsigned threads = 1);
 
 }  // namespace disktune

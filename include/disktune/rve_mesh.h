@@ -56,7 +56,8 @@ struct RveMesh {
 /// throws InvalidInput (saying what to change) for a gap under d / 1000, d the smallest
 /// fiber's diameter (fibers that nearly touch leave no matrix between them to mesh),
 /// segments outside [6, 10^4], an element size that is not finite or is under d / 1000,
-/// or a mesh too large for the memory allowed (Remedy::memory).
+/// or a mesh too large for the memory allowed (Remedy::memory); IoError when Gmsh's
+/// library cannot be loaded (it is loaded here, so a job fails before its work).
 void check_rve_mesh(const RveSpec& rve, const RveMeshSpec& mesh);
 
 /// Meshes the cell of `rve` (fiber k of diameter rve.diameters[k]). Throws InvalidInput

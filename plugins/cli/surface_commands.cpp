@@ -280,7 +280,7 @@ int run_surface_report(const SurfaceReportJob& job) {
   if (packing.size() < kFewestToMesh) return report_without_mesh(job, domain, packing, eta, rho, maximal, conflict_free);
   const SampleMesh m = sample_mesh(packing);
   SurfaceMeshQuality q = measure_surface_mesh(m.mesh, m.radius);
-  q.hausdorff = hausdorff_distance(m.mesh, surface, 10000, 1);
+  q.hausdorff = hausdorff_distance(m.mesh, surface, 10000, 1, 0);
 
   if (!job.json.empty()) {
     std::ostringstream j;
@@ -343,7 +343,7 @@ int run_surface_remesh(const RemeshJob& job) {
   SurfaceMeshQuality q;
   if (!result.mesh.triangles.empty()) {
     q = measure_surface_mesh(result.mesh, result.radii);
-    q.hausdorff = hausdorff_distance(result.mesh, *surface, 10000, 1);
+    q.hausdorff = hausdorff_distance(result.mesh, *surface, 10000, 1, job.threads);
   }
   if (!job.json.empty()) {
     std::ostringstream j;

@@ -330,7 +330,7 @@ py::object report_of(const PyPacking& packing, bool spectrum, unsigned threads) 
         for (const DiskId id : p.ids()) radii.push_back(p.radius(id));
         m = restricted_delaunay(p);
         q = measure_surface_mesh(m, radii);
-        q.hausdorff = hausdorff_distance(m, p.domain(), 10000, 1);
+        q.hausdorff = hausdorff_distance(m, p.domain(), 10000, 1, 0);
       }
     }
     out["count"] = p.size();
@@ -427,7 +427,7 @@ PyMesh remesh_surface(const python::SurfaceHandle& surface, std::size_t vertices
   {
     py::gil_scoped_release released;
     q = measure_surface_mesh(r.mesh, r.radii);
-    q.hausdorff = hausdorff_distance(r.mesh, *surface.domain, 10000, 1);
+    q.hausdorff = hausdorff_distance(r.mesh, *surface.domain, 10000, 1, threads);
   }
   PyMesh out = surface_mesh_of(r.mesh);
   py::dict report;

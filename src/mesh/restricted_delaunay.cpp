@@ -153,11 +153,16 @@ void random_points(const std::vector<Vec3>& v, const Tris& tris, std::size_t n, 
   }
 }
 
-/// The largest distance from `points` to the triangles of `tree`.
-double farthest(const std::vector<Point>& points, const Tree& tree) {
-  double d2 = 0;
-  for (const Point& p : points) d2 = std::max(d2, CGAL::to_double(tree.squared_distance(p)));
-  return std::sqrt(d2);
+/// The largest distance from `points` to the triangles of `tree`, on `threads` threads
+/// (the tree's distance queries only read it once its search tree is built).
+double farthest(const std::vector<Point>& points, const Tree& tree, unsigned threads) {
+  constexpr std::size_t kChunk = 1024;
+  std::vector<double> d2((points.size() + kChunk - 1) / kChunk, 0.0);
+  detail::parallel_for(d2.size(), threads, [&](std::size_t chunk, unsigned) {
+    for (std::size_t i = chunk * kChunk; i < std::min(points.size(), (chunk + 1) * kChunk); ++i)
+      d2[chunk] = std::max(d2[chunk], CGAL::to_double(tree.squared_distance(points[i])));
+  });
+  return std::sqrt(d2.empty() ? 0.0 : *std::max_element(d2.begin(), d2.end()));
 }
 
 /// An undirected edge as a map key.
@@ -1049,13 +1054,16 @@ SurfaceMesh detail::restricted_delaunay(
 }
 
 double hausdorff_distance(const SurfaceMesh& mesh, const SurfaceDomain& surface,
-                          std::size_t samples_per_mesh, std::uint64_t seed) {
+                          std::size_t samples_per_mesh, std::uint64_t seed, unsigned threads) {
+  threads = detail::thread_count(threads);
   const TriangleList mesh_tris = cgal_triangles(mesh.vertices, mesh.triangles);
   if (mesh_tris.empty()) {
     throw InvalidInput("hausdorff_distance: the mesh has no triangles of non-zero area");
   }
   const TriangleList surface_tris = cgal_triangles(surface.vertices(), surface.triangles());
   Tree mesh_tree(mesh_tris.begin(), mesh_tris.end()), surface_tree(surface_tris.begin(), surface_tris.end());
+  mesh_tree.build();  // now, not lazily inside the queries on several threads
+  surface_tree.build();
   mesh_tree.accelerate_distance_queries();
   surface_tree.accelerate_distance_queries();
 
@@ -1065,7 +1073,8 @@ double hausdorff_distance(const SurfaceMesh& mesh, const SurfaceDomain& surface,
   random_points(mesh.vertices, mesh.triangles, samples_per_mesh, rng, on_mesh);
   for (const Vec3& v : surface.vertices()) on_surface.push_back(point(v));
   random_points(surface.vertices(), surface.triangles(), samples_per_mesh, rng, on_surface);
-  return std::max(farthest(on_mesh, surface_tree), farthest(on_surface, mesh_tree));
+  return std::max(farthest(on_mesh, surface_tree, threads),
+                  farthest(on_surface, mesh_tree, threads));
 }
 
 }  // namespace disktune

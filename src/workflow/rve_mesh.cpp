@@ -392,6 +392,7 @@ void check_rve_mesh(const RveSpec& rve, const RveMeshSpec& mesh) {
   const double smallest = rve.diameter_cv != 0 || !rve.diameter_list.empty() ? detail::diameter_law(rve).smallest
                                                                              : rve.diameter;
   check_spec(rve.width, rve.height, smallest, rve.gap, mesh);
+  detail::gmsh_api();  // a missing Gmsh fails the job now, not after the fibers are made
 }
 
 RveMesh mesh_rve(const Rve& rve, const RveMeshSpec& spec) {
