@@ -394,13 +394,19 @@ TEST(RestrictedDelaunay, RefusesTooFewOrNonFiniteSamples) {
   EXPECT_THROW(restricted_delaunay(four, sphere, any, {{2, 2}}), InvalidInput);
 }
 
+// The surface's own triangles as a mesh.
+SurfaceMesh mesh_of(const SurfaceDomain& s) {
+  SurfaceMesh m{s.vertices(), {}};
+  for (const auto& t : s.triangles()) {
+    m.triangles.push_back({static_cast<std::uint32_t>(t[0]), static_cast<std::uint32_t>(t[1]),
+                           static_cast<std::uint32_t>(t[2])});
+  }
+  return m;
+}
+
 TEST(RestrictedDelaunay, HausdorffIsZeroForTheSurfaceItselfAndSeesAScaling) {
   const SurfaceDomain sphere = surface("sphere.off");
-  SurfaceMesh same{sphere.vertices(), {}};
-  for (const auto& t : sphere.triangles()) {
-    same.triangles.push_back({static_cast<std::uint32_t>(t[0]), static_cast<std::uint32_t>(t[1]),
-                              static_cast<std::uint32_t>(t[2])});
-  }
+  const SurfaceMesh same = mesh_of(sphere);
   EXPECT_LT(hausdorff_distance(same, sphere, 5000, 1), 1e-12);
   // Scaled by 1.1 about the center, radius about 0.5: every point moves about 0.05.
   SurfaceMesh scaled = same;
@@ -435,11 +441,7 @@ double distance_to_triangle(Vec3 x, Vec3 a, Vec3 b, Vec3 c) {
 // triangle; the same on any number of threads.
 TEST(RestrictedDelaunay, HausdorffSeesOneVertexPulledOut) {
   const SurfaceDomain sphere = surface("sphere.off");
-  SurfaceMesh spiked{sphere.vertices(), {}};
-  for (const auto& t : sphere.triangles()) {
-    spiked.triangles.push_back({static_cast<std::uint32_t>(t[0]), static_cast<std::uint32_t>(t[1]),
-                                static_cast<std::uint32_t>(t[2])});
-  }
+  const SurfaceMesh spiked = mesh_of(sphere);
   const Vec3 center = (sphere.bbox_min() + sphere.bbox_max()) * 0.5;
   for (const std::size_t v : {std::size_t{0}, sphere.vertices().size() - 1}) {
     SCOPED_TRACE(v);
