@@ -35,6 +35,14 @@ absent() {  # absent NAME FILE
 expect help 0 "sample" -- "$bin" --help
 expect sample-help 0 "--radius" -- "$bin" sample --help
 expect version 0 "^disktune [0-9]+\.[0-9]+\.[0-9]+$" -- "$bin" --version
+# Gmsh is loaded only when an RVE is meshed (src/workflow/gmsh_library.cpp): linked, it
+# brought some ninety libraries into every start of the command (0.14 s).
+if ldd "$bin" | grep -q 'libgmsh'; then
+  echo "FAIL start-without-gmsh: $bin links Gmsh's library"
+  fails=$((fails + 1))
+else
+  pass=$((pass + 1))
+fi
 # The manual page and the bash completion come from the command's own options
 "$bin" man -o disktune.1 2>/dev/null && head -n 1 disktune.1 | grep -q '^\.TH DISKTUNE 1 ' &&
   for c in sample tune mesh report sweep remesh rve; do grep -qx "\.SS $c" disktune.1 || exit 1; done &&
