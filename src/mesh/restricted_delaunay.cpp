@@ -55,7 +55,7 @@ using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = Kernel::Point_3;
 using Triangle3 = Kernel::Triangle_3;
 using VertexBase = CGAL::Triangulation_vertex_base_with_info_3<std::uint32_t, Kernel>;
-// What a cell carries: its index among the finite cells (DualEdges' arrays), and for
+// What a cell carries: its index among the cells DualEdges tests (into its arrays), and for
 // meshing again after a few samples moved (RestrictedDelaunayReuse), a stamp naming it
 // (0: made or changed since the last mesh) and per facet the verdict found for it with
 // the cell across of that stamp (0 none, 1 no mesh triangle, 2 the triangle of its
@@ -425,6 +425,14 @@ struct SurfaceSearch {
   double ball_radius = 0, scale = 1;
 };
 
+/// The cells' circumcenters in intervals and their boxes, by DualEdges' cell index: kept
+/// with the triangulation, so meshing again writes memory already in use (fresh pages
+/// cost more than the centers: the elephant at 10^4 samples, a fifth of a mesh's time).
+struct CellCenters {
+  std::vector<detail::HomogeneousPoint<Interval>> center;
+  std::vector<PointBox> box;
+};
+
 class DualEdges {
  public:
   /// `reach` > 0: every point of the surface lies within it of a sample, so a point of
@@ -433,10 +441,12 @@ class DualEdges {
   /// The searches that follow may run on several threads, each with its own Scratch;
   /// `threads` find the triangles near each sample here.
   /// `tested`: the facets whose duals will be asked about (hits), where not all: only
-  /// their cells' circumcenters and their corners' triangles are made.
+  /// their cells get an index (CellInfo::index, into `centers`) and a circumcenter, and
+  /// only their corners' triangles are found.
   DualEdges(const Delaunay& dt, const std::vector<Vec3>& samples, const SurfaceDomain& surface,
             const SurfaceSearch& search, detail::DualArithmetic arithmetic, double reach,
-            unsigned threads, const std::vector<Delaunay::Facet>* tested = nullptr)
+            unsigned threads, CellCenters& centers,
+            const std::vector<Delaunay::Facet>* tested = nullptr)
       : dt_(dt),
         samples_(samples),
         surface_(surface),
@@ -447,20 +457,26 @@ class DualEdges {
         tree_(search.tree),
         ball_center_(search.ball_center),
         ball_radius_(search.ball_radius),
-        scale_(search.scale) {
+        scale_(search.scale),
+        interval_centers_(centers.center),
+        interval_boxes_(centers.box) {
+    for (auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c)
+      c->info().index = kNoIndex;
     std::vector<Delaunay::Cell_handle> cells;
-    for (auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c) {
+    std::vector<char> sample_needed(samples.size(), 0);
+    const auto need = [&](Delaunay::Cell_handle c) {
+      if (dt.is_infinite(c) || c->info().index != kNoIndex) return;
       c->info().index = static_cast<std::uint32_t>(cells.size());
       cells.push_back(c);
-    }
-    // The cells and corner samples the tested facets need; all without a list.
-    std::vector<char> cell_needed(cells.size(), tested == nullptr),
-        sample_needed(samples.size(), tested == nullptr);
-    if (tested) {
+    };
+    if (!tested) {
+      for (auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c) need(c);
+      sample_needed.assign(samples.size(), 1);
+    } else {
       for (const Delaunay::Facet& f : *tested) {
         const Ends e = ends(f);
-        cell_needed[e.cell->info().index] = 1;
-        if (!dt.is_infinite(e.other)) cell_needed[e.other->info().index] = 1;
+        need(e.cell);
+        need(e.other);
         sample_needed[e.cell->vertex((e.facet + 1) & 3)->info()] = 1;
       }
     }
@@ -472,7 +488,6 @@ class DualEdges {
             [[maybe_unused]] const RoundingFor<Interval> rounding;
             for (std::size_t i = chunk * kChunk; i < std::min(cells.size(), (chunk + 1) * kChunk);
                  ++i) {
-              if (!cell_needed[i]) continue;
               const Delaunay::Cell_handle c = cells[i];
               interval_centers_[i] =
                   detail::circumcenter<Interval>(at(c, 0), at(c, 1), at(c, 2), at(c, 3));
@@ -790,6 +805,7 @@ class DualEdges {
     return it->second;
   }
 
+  static constexpr std::uint32_t kNoIndex = ~std::uint32_t{0};
   const Delaunay& dt_;
   const std::vector<Vec3>& samples_;
   const SurfaceDomain& surface_;
@@ -803,8 +819,8 @@ class DualEdges {
   double ball_radius_, scale_;
   std::vector<std::vector<std::uint32_t>>
       near_sample_;  // with a reach: find_triangles_near_samples
-  std::vector<detail::HomogeneousPoint<Interval>> interval_centers_;
-  std::vector<PointBox> interval_boxes_;
+  std::vector<detail::HomogeneousPoint<Interval>>& interval_centers_;  // CellCenters'
+  std::vector<PointBox>& interval_boxes_;
 };
 
 // A facet's corners, sorted.
@@ -813,6 +829,31 @@ std::array<std::uint32_t, 3> sorted_corners(const Delaunay::Facet& f) {
   for (int k = 0; k < 3; ++k) t[k] = f.first->vertex((f.second + 1 + k) & 3)->info();
   std::sort(t.begin(), t.end());
   return t;
+}
+
+// f's corners.
+std::array<Vec3, 3> corners(const Delaunay::Facet& f, const std::vector<Vec3>& samples) {
+  std::array<Vec3, 3> t;
+  for (int k = 0; k < 3; ++k) t[k] = samples[f.first->vertex((f.second + 1 + k) & 3)->info()];
+  return t;
+}
+
+// True where no point within `reach` of the corners of t is equally near to all three:
+// an edge longer than twice the reach, or a circumcircle wider than it (its center is
+// the nearest such point). Where every point of the surface lies within `reach` of a
+// sample, the dual of such a facet meets no surface, and DualEdges, which searches only
+// within reach * (1 + 1e-6) of a corner, would find nothing on it. The margins (that
+// factor, 1e-9 more, and the cross product's norm taken 1e-12 of its bound larger) lie
+// far above the rounding of doubles, so a facet is dropped only where that holds exactly.
+bool out_of_reach(const std::array<Vec3, 3>& t, double reach) {
+  const double far = reach * (1 + 1e-6) * (1 + 1e-9);
+  const Vec3 ab = t[1] - t[0], ac = t[2] - t[0], bc = t[2] - t[1];
+  const double ab2 = squared_norm(ab), ac2 = squared_norm(ac), bc2 = squared_norm(bc);
+  const double edge2 = 4 * far * far;
+  if (ab2 > edge2 || ac2 > edge2 || bc2 > edge2) return true;
+  // The circumradius is |ab| |ac| |bc| / (2 |ab x ac|).
+  const double twice_area = norm(cross(ab, ac)) + 1e-12 * std::sqrt(ab2 * ac2);
+  return std::sqrt(ab2 * ac2 * bc2) > 2 * far * twice_area;
 }
 
 // The verdict f got with the same two cells around it, from either side, or 0.
@@ -837,6 +878,7 @@ struct detail::RestrictedDelaunayState {
   double reach = 0;
   std::uint32_t next_stamp = 1;
   bool valid = false;  // all the above describe the last mesh
+  CellCenters centers;  // DualEdges' memory, whatever `valid` says
 };
 
 RestrictedDelaunayReuse::RestrictedDelaunayReuse()
@@ -950,17 +992,27 @@ SurfaceMesh detail::restricted_delaunay(
   // Stamps for the cells made since the last call; a facet whose two cells kept theirs
   // keeps its verdict (its dual edge, and the samples near its corners, are the same):
   // only the others are tested.
+  // With a reach, a facet whose corners no point within it is equally near to gets its
+  // verdict (no triangle) here, before any dual is made (most facets of a surface's
+  // Delaunay tetrahedra: those across its inside).
   std::vector<Delaunay::Facet> facets, tested;
+  const bool some_known = reuse || covered_within > 0;  // else every facet is tested
   if (dt.dimension() == 3) {
     for (auto c = dt.all_cells_begin(); c != dt.all_cells_end(); ++c)
       if (c->info().stamp == 0) c->info().stamp = st.next_stamp++;
     facets.assign(dt.finite_facets_begin(), dt.finite_facets_end());
-    if (reuse)
-      for (const Delaunay::Facet& f : facets)
-        if (known_verdict(f) == 0) tested.push_back(f);
+    for (const Delaunay::Facet& f : facets) {
+      if (!some_known || known_verdict(f) != 0) continue;
+      if (covered_within > 0 && out_of_reach(corners(f, samples), covered_within)) {
+        f.first->info().verdict[f.second] = 1;
+        f.first->info().across[f.second] = f.first->neighbor(f.second)->info().stamp;
+      } else {
+        tested.push_back(f);
+      }
+    }
   }
-  DualEdges duals(dt, samples, surface, *st.search, arithmetic, covered_within, threads,
-                  reuse ? &tested : nullptr);
+  DualEdges duals(dt, samples, surface, *st.search, arithmetic, covered_within, threads, st.centers,
+                  some_known ? &tested : nullptr);
   const std::vector<Vec3>& sv = surface.vertices();
   SurfaceMesh mesh;
   mesh.vertices = samples;
@@ -1011,7 +1063,7 @@ SurfaceMesh detail::restricted_delaunay(
       for (std::size_t i = chunk * kChunk; i < std::min(facets.size(), (chunk + 1) * kChunk); ++i) {
         const Delaunay::Facet& f = facets[i];
         std::array<std::uint32_t, 3> t = sorted_corners(f);
-        if (const std::uint8_t verdict = reuse ? known_verdict(f) : 0) {
+        if (const std::uint8_t verdict = some_known ? known_verdict(f) : 0) {
           if (verdict == 3) std::swap(t[1], t[2]);
           if (verdict >= 2) kept[chunk].push_back(t);
           continue;
