@@ -991,28 +991,33 @@ SurfaceMesh detail::restricted_delaunay(
   threads = thread_count(threads);
   // Stamps for the cells made since the last call; a facet whose two cells kept theirs
   // keeps its verdict (its dual edge, and the samples near its corners, are the same):
-  // only the others are tested.
-  // With a reach, a facet whose corners no point within it is equally near to gets its
-  // verdict (no triangle) here, before any dual is made (most facets of a surface's
-  // Delaunay tetrahedra: those across its inside).
-  std::vector<Delaunay::Facet> facets, tested;
-  const bool some_known = reuse || covered_within > 0;  // else every facet is tested
+  // those facets are settled here (their triangles in `settled`), and with a reach,
+  // those whose corners no point within it is equally near to (most facets of a
+  // surface's Delaunay tetrahedra: those across its inside), before any dual is made.
+  // The others are tested.
+  std::vector<Delaunay::Facet> tested;
+  std::vector<std::array<std::uint32_t, 3>> settled;
   if (dt.dimension() == 3) {
     for (auto c = dt.all_cells_begin(); c != dt.all_cells_end(); ++c)
       if (c->info().stamp == 0) c->info().stamp = st.next_stamp++;
-    facets.assign(dt.finite_facets_begin(), dt.finite_facets_end());
-    for (const Delaunay::Facet& f : facets) {
-      if (!some_known || known_verdict(f) != 0) continue;
-      if (covered_within > 0 && out_of_reach(corners(f, samples), covered_within)) {
-        f.first->info().verdict[f.second] = 1;
-        f.first->info().across[f.second] = f.first->neighbor(f.second)->info().stamp;
+    for (auto f = dt.finite_facets_begin(); f != dt.finite_facets_end(); ++f) {
+      if (const std::uint8_t verdict = reuse ? known_verdict(*f) : 0) {
+        if (verdict == 1) continue;
+        std::array<std::uint32_t, 3> t = sorted_corners(*f);
+        if (verdict == 3) std::swap(t[1], t[2]);
+        settled.push_back(t);
+      } else if (covered_within > 0 && out_of_reach(corners(*f, samples), covered_within)) {
+        f->first->info().verdict[f->second] = 1;
+        f->first->info().across[f->second] = f->first->neighbor(f->second)->info().stamp;
       } else {
-        tested.push_back(f);
+        tested.push_back(*f);
       }
     }
   }
+  // Where every facet is tested, every cell's center is made, in the order they lie.
+  const bool every_facet = !reuse && covered_within == 0;
   DualEdges duals(dt, samples, surface, *st.search, arithmetic, covered_within, threads, st.centers,
-                  some_known ? &tested : nullptr);
+                  every_facet ? nullptr : &tested);
   const std::vector<Vec3>& sv = surface.vertices();
   SurfaceMesh mesh;
   mesh.vertices = samples;
@@ -1054,20 +1059,16 @@ SurfaceMesh detail::restricted_delaunay(
     // The facets in chunks on the threads, each with its own scratch; the kept triangles
     // are sorted below, so the mesh is the same for any number of threads. A facet's
     // verdict is written into the cell it is seen from, by its thread alone.
-    constexpr std::size_t kChunk = 2048;
-    const std::size_t chunks = (facets.size() + kChunk - 1) / kChunk;
+    constexpr std::size_t kChunk = 1024;
+    const std::size_t chunks = (tested.size() + kChunk - 1) / kChunk;
     std::vector<DualEdges::Scratch> scratch(threads);
     std::vector<std::vector<std::size_t>> hits(threads);
     std::vector<std::vector<std::array<std::uint32_t, 3>>> kept(chunks);
+    mesh.triangles = std::move(settled);
     parallel_for(chunks, threads, [&](std::size_t chunk, unsigned thread) {
-      for (std::size_t i = chunk * kChunk; i < std::min(facets.size(), (chunk + 1) * kChunk); ++i) {
-        const Delaunay::Facet& f = facets[i];
-        std::array<std::uint32_t, 3> t = sorted_corners(f);
-        if (const std::uint8_t verdict = some_known ? known_verdict(f) : 0) {
-          if (verdict == 3) std::swap(t[1], t[2]);
-          if (verdict >= 2) kept[chunk].push_back(t);
-          continue;
-        }
+      for (std::size_t i = chunk * kChunk; i < std::min(tested.size(), (chunk + 1) * kChunk); ++i) {
+        const Delaunay::Facet& f = tested[i];
+        const std::array<std::uint32_t, 3> t = sorted_corners(f);
         duals.hits(f, hits[thread], scratch[thread]);
         const std::size_t before = kept[chunk].size();
         keep(f, hits[thread], kept[chunk]);
