@@ -335,26 +335,27 @@ bool close_voids(SurfacePacking& packing, unsigned threads, std::size_t& moved,
 }
 
 // The first `unchecked` sweeps (a surface's) check their moves for conflicts only, but
-// next to fixed disks; then `close(moved)` must make the packing maximal again, or the
-// run stops there, answering nothing. The sweeps after it move only the disks `only`
-// marks, where given (a surface's).
+// next to fixed disks; then `close(moved, pulled)` must make the packing maximal again
+// (listing the disks it moved in `pulled`), or the run stops there, answering nothing.
+// The sweeps after it move only the disks `only` marks, where given (a surface's).
 template <class P>
-std::optional<std::size_t> relax_in(P& packing, double spacing, int sweeps, Rng& rng,
-                                    const std::function<bool(int)>& after_sweep, unsigned threads,
-                                    int unchecked = 0,
-                                    const std::function<bool(std::size_t&)>& close = {},
-                                    const std::vector<char>* only = nullptr) {
+std::optional<std::size_t> relax_in(
+    P& packing, double spacing, int sweeps, Rng& rng, const std::function<bool(int)>& after_sweep,
+    unsigned threads, int unchecked = 0,
+    const std::function<bool(std::size_t&, std::vector<DiskId>&)>& close = {},
+    const std::vector<char>* only = nullptr) {
   check_spacing(spacing);
   if (sweeps < 0) throw InvalidInput("relax: the number of sweeps must be 0 or more, got " + std::to_string(sweeps));
   Steps<P> last(packing.id_bound(), typename Steps<P>::value_type{});
   Kept<P> kept(packing, spacing);
   std::size_t moved = 0;
   bool open = unchecked > 0;  // voids may be open
+  std::vector<DiskId> pulled;
   for (int k = 0; k < sweeps; ++k) {
     if (open && k == unchecked) {
-      if (!close(moved)) return std::nullopt;
+      if (!close(moved, pulled)) return std::nullopt;
       if constexpr (std::is_same_v<P, SurfacePacking>)
-        kept.springs.forget();  // closing moved disks
+        for (const DiskId q : pulled) kept.springs.moved(packing, q);  // at its last place
       open = false;
     }
     if constexpr (std::is_same_v<P, SurfacePacking>) {
@@ -365,7 +366,7 @@ std::optional<std::size_t> relax_in(P& packing, double spacing, int sweeps, Rng&
     }
     if (after_sweep && !after_sweep(k + 1)) break;
   }
-  if (open && !close(moved)) return std::nullopt;
+  if (open && !close(moved, pulled)) return std::nullopt;
   return moved;
 }
 
@@ -407,8 +408,7 @@ std::size_t relax(SurfacePacking& packing, double spacing, int sweeps, Rng& rng,
   const SurfacePacking start = packing;
   const Rng start_rng = rng;
   std::vector<char> near_pulled;
-  const auto close = [&](std::size_t& moved) {
-    std::vector<DiskId> pulled;
+  const auto close = [&](std::size_t& moved, std::vector<DiskId>& pulled) {
     if (!close_voids(packing, threads, moved, pulled)) return false;
     near_pulled.assign(packing.id_bound(), 0);
     const double reach = 2 * spacing * packing.max_radius();
