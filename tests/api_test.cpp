@@ -187,8 +187,10 @@ TEST(Remesh, KeepsSharpEdgesUnlessToldNot) {
   EXPECT_THROW(remesh(fandisk, 3000, options), InvalidInput);
 }
 
-// At 700 vertices fandisk's radius (about 0.048) is more than 0.45 times the gap under
-// its ledge (0.031): with one radius the mesh of some seeds has edges in three triangles.
+// At 650 vertices fandisk's radius (about 0.05) is more than 0.45 times the gap under
+// its ledge (0.031): with one radius the mesh of some seeds has edges in three triangles
+// (seeds 1-20: 10 at 650 vertices, 1 at 700 since the sample's ids follow a spatial
+// order, 13 at 600).
 // remesh then meshes again with smaller radii there (thickness sizing). Every seed's
 // vertices are judged as a packing of their own radii by the oracle, every mesh's
 // topology by the independent check, and the graded path must have been taken.
@@ -201,10 +203,10 @@ TEST(Remesh, WhereTheSurfaceIsThinnerThanTheRadiusTheMeshStaysAManifold) {
     SCOPED_TRACE("seed " + std::to_string(seed));
     RemeshOptions options;
     options.seed = seed;
-    const RemeshResult r = remesh(fandisk, 700, options);
+    const RemeshResult r = remesh(fandisk, 650, options);
     ASSERT_TRUE(r.tuning.reached);
-    ASSERT_EQ(r.mesh.vertices.size(), 700u);
-    ASSERT_EQ(r.radii.size(), 700u);
+    ASSERT_EQ(r.mesh.vertices.size(), 650u);
+    ASSERT_EQ(r.radii.size(), 650u);
     const oracle::SurfaceReport report = test::remesh_report(features_on, r);
     EXPECT_TRUE(report.ok()) << report.summary();
     std::vector<std::array<std::size_t, 3>> tris;
@@ -216,8 +218,10 @@ TEST(Remesh, WhereTheSurfaceIsThinnerThanTheRadiusTheMeshStaysAManifold) {
       EXPECT_LT(*std::min_element(r.radii.begin(), r.radii.end()), 0.5 * r.radius);
     }
   }
-  std::printf("[ remesh ] fandisk, 700 vertices: %d of 10 seeds meshed again with smaller radii in thin parts\n",
-              graded);
+  std::printf(
+      "[ remesh ] fandisk, 650 vertices: %d of 10 seeds meshed again with smaller radii in thin "
+      "parts\n",
+      graded);
   EXPECT_GT(graded, 0);
 }
 

@@ -209,6 +209,13 @@ class SurfacePacking {
   bool empty() const { return live_ == 0; }
   DiskId id_bound() const { return static_cast<DiskId>(radius_.size()); }
   std::vector<DiskId> ids() const;
+  /// Renumbers the live disks 0, 1, ... in the order of a Z-order curve through the
+  /// neighbour grid's cells (free ids dropped), and returns their old ids in that order.
+  /// Disks near one another then sit near one another in memory: relaxation of the
+  /// elephant at 10^5 disks on one core 2.1-2.4 -> 1.8-1.9 s, and on two cores, where
+  /// each thread's writes stay off the cache lines the other reads, 1.4-1.6 -> 1.24 s.
+  /// Ids taken before name other disks afterwards.
+  std::vector<DiskId> order_by_place();
 
   /// f(id) for every live disk whose center is within R of q.
   template <class F>

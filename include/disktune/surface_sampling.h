@@ -16,7 +16,8 @@ namespace disktune {
 /// then 1D darts over what is left uncovered of the fixed curves), then darts over the
 /// surface by area and over ever smaller cells around the uncovered part, then one disk
 /// at a uniform point of each void left (never at a void's vertex, which would bias the
-/// spacing). Conflict-free and maximal.
+/// spacing). Conflict-free and maximal; ids follow a spatial order
+/// (SurfacePacking::order_by_place).
 SurfacePacking sample_mps(std::shared_ptr<const SurfaceDomain> domain,
                                   const SurfaceSizing& sizing, Rng& rng);
 

@@ -268,7 +268,8 @@ double SurfacePacking::radius_at(const SurfacePoint& q) const {
   return sizing_->is_constant() ? sizing_->max_radius() : sizing_->radius(domain(), q.p, q.triangle);
 }
 
-DiskId SurfacePacking::insert(const SurfacePoint& q, std::uint8_t flags) {
+DiskId SurfacePacking::insert(const SurfacePoint& where, std::uint8_t flags) {
+  const SurfacePoint q = where;  // `where` may be one of ours (point(id)), which growing moves
   DiskId id;
   if (!free_ids_.empty()) {
     id = free_ids_.back();
@@ -329,6 +330,61 @@ std::vector<DiskId> SurfacePacking::ids() const {
   for (DiskId i = 0; i < id_bound(); ++i)
     if (alive(i)) out.push_back(i);
   return out;
+}
+
+namespace {
+
+// The bits of v (below 2^21) spread to every third bit: one axis of a Z-order key.
+std::uint64_t spread_bits(std::uint64_t v) {
+  v &= 0x1fffff;
+  v = (v | v << 32) & 0x1f00000000ffffULL;
+  v = (v | v << 16) & 0x1f0000ff0000ffULL;
+  v = (v | v << 8) & 0x100f00f00f00f00fULL;
+  v = (v | v << 4) & 0x10c30c30c30c30c3ULL;
+  v = (v | v << 2) & 0x1249249249249249ULL;
+  return v;
+}
+
+}  // namespace
+
+std::vector<DiskId> SurfacePacking::order_by_place() {
+  // Cells counted from the domain's corner, so the indices are not negative; past 2^21
+  // cells keys repeat, which only spoils the order, not the packing.
+  const Vec3 lo = domain().bbox_min();
+  const auto axis = [&](double v, double from) {
+    return spread_bits(static_cast<std::uint64_t>(
+        std::max<std::int64_t>(0, SpaceGrid::cell_index(v - from, grid_.cell()))));
+  };
+  std::vector<std::pair<std::uint64_t, DiskId>> keyed;
+  keyed.reserve(live_);
+  for (DiskId id = 0; id < id_bound(); ++id) {
+    if (!alive(id)) continue;
+    const Vec3 c = point_[id].p;
+    keyed.emplace_back(axis(c.x, lo.x) | axis(c.y, lo.y) << 1 | axis(c.z, lo.z) << 2, id);
+  }
+  std::sort(keyed.begin(), keyed.end());  // ties by id: the order is the same every run
+  std::vector<DiskId> old(keyed.size());
+  std::vector<SurfacePoint> point(keyed.size());
+  std::vector<double> radius(keyed.size());
+  std::vector<std::uint8_t> flags(keyed.size());
+  std::vector<PatchSet> patches(keyed.size());
+  SpaceGrid grid(grid_.cell());
+  for (std::size_t k = 0; k < keyed.size(); ++k) {
+    const DiskId id = old[k] = keyed[k].second;
+    point[k] = point_[id];
+    radius[k] = radius_[id];
+    flags[k] = flags_[id];
+    patches[k] = patches_[id];
+    grid.insert(static_cast<std::uint32_t>(k), point[k].p);
+  }
+  point_.swap(point);
+  radius_.swap(radius);
+  flags_.swap(flags);
+  patches_.swap(patches);
+  grid_ = std::move(grid);
+  free_ids_.clear();
+  serial_ = Serial();  // what was kept about the old numbering is not this packing's
+  return old;
 }
 
 bool SurfacePacking::conflicts(Vec3 q, PatchSet on, DiskId ignore1, DiskId ignore2) const {

@@ -454,6 +454,7 @@ SurfacePacking detail::sample_mps_unchecked(std::shared_ptr<const SurfaceDomain>
       if (!packing.conflicts(q)) packing.insert(q);
     }
   }
+  packing.order_by_place();  // the darts' order is random over the surface
   return packing;
 }
 

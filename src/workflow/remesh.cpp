@@ -103,6 +103,9 @@ std::optional<RemeshResult> remesh_at(const std::shared_ptr<const SurfaceDomain>
   if (!reached)
     out.tuning =
         detail::tune_surface(packing, Target::count(vertex_count), rng, options.tune, false);
+  // Ids in a spatial order again (the tuning's new disks came anywhere), as relaxation
+  // and the meshes read neighbours' data by them.
+  packing.order_by_place();
   // The rest length of the springs: the hexagonal spacing of the count reached.
   const double eta = static_cast<double>(packing.size()) / density_unit(packing);
   const double spacing = 1 / relative_radius_for(eta);
