@@ -69,6 +69,22 @@ bool vertex_covered(const SurfacePacking& packing, const TrianglePlane& plane, P
   return cover.covered();
 }
 
+// Whether one disk of `near` that counts on `patch` holds the ball of radius R around q
+// with room to spare: then each point of a triangle within R of q lies inside it by
+// more than vertex_covered's tolerance, and is no void point (is_maximal of the
+// elephant's maximal sample at 10^4 disks, one core, regions of the radius: 0.081 ->
+// 0.074 s).
+bool holds_ball(const SurfacePacking& packing, Vec3 q, double R, const std::vector<DiskId>& near,
+                PatchSet patch) {
+  for (const DiskId j : near) {
+    const double room = packing.radius(j) * (1 - 4 * kRelTol) - R;
+    if (room > 0 && squared_norm(packing.center(j) - q) < room * room &&
+        packing.share_patch(packing.patches(j), patch))
+      return true;
+  }
+  return false;
+}
+
 // Whether the part of a triangle within `reach` of q (in its plane) lies inside the disk
 // `held` (radius below 0: none). That part is convex, so its point farthest from held's
 // center is a corner, a crossing of an edge with the circle around q, or the point of
@@ -149,8 +165,15 @@ void void_points_of(const SurfacePacking& packing, std::size_t t, const std::arr
   thread_local std::vector<DiskId> near;
   thread_local std::vector<Ball> balls;
   const PatchSet patch = packing.index().patch_of_triangle(t);
-  for_each_region(plane, packing.max_radius(), [&](Vec3 q, double R) {
+  // Regions of half the largest radius: more of them lie inside one disk (holds_ball)
+  // and the rest have fewer circles. is_maximal of maximal samples at 10^4 disks, one
+  // core, against regions of the whole radius: elephant 0.057 -> 0.045 s, fandisk 0.073
+  // -> 0.052, sphere 0.030 -> 0.027, mesh_with_border 0.037 -> 0.031; the elephant at
+  // 10^5 0.36 -> 0.32 (a third of the radius: slower again). The sample's cells, about
+  // r wide, take as long either way.
+  for_each_region(plane, 0.5 * packing.max_radius(), [&](Vec3 q, double R) {
     disks_near(packing, q, R, ignore, near);
+    if (holds_ball(packing, q, R, near, patch)) return;  // every point there strictly inside
     // Only circles passing within R of q make vertices in the region.
     balls.clear();
     const Vec2 q2 = plane.to_plane(q);
