@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <map>
 #include <set>
@@ -162,44 +163,61 @@ std::size_t cap_bow_ties(SurfaceMesh& mesh) {
   std::size_t caps = 0;
   for (bool changed = true; changed;) {
     changed = false;
-    std::vector<std::vector<std::size_t>> around(mesh.vertices.size());
+    // The triangles of each vertex, in one array (start[v] .. start[v + 1]): a vector
+    // per vertex cost 10^4 allocations a pass, as much as the rest of the pass.
+    std::vector<std::size_t> start(mesh.vertices.size() + 1, 0),
+        by_vertex(3 * mesh.triangles.size());
+    for (const Tri& tri : mesh.triangles)
+      for (const std::uint32_t v : tri) ++start[v + 1];
+    for (std::size_t v = 0; v < mesh.vertices.size(); ++v) start[v + 1] += start[v];
+    std::vector<std::size_t> fill(start.begin(), start.end() - 1);
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
-      for (const std::uint32_t v : mesh.triangles[t]) around[v].push_back(t);
-    // The mesh's edges and triangles (sorted), built when the first bow tie is met.
-    std::set<std::pair<std::uint32_t, std::uint32_t>> edges;
-    std::set<Tri> sorted_triangles;
-    const auto index_mesh = [&] {
-      if (!sorted_triangles.empty()) return;
-      for (const Tri& tri : mesh.triangles) {
-        Tri key = tri;
-        std::sort(key.begin(), key.end());
-        sorted_triangles.insert(key);
-        for (int k = 0; k < 3; ++k) edges.insert(edge(tri[k], tri[(k + 1) % 3]));
-      }
+      for (const std::uint32_t v : mesh.triangles[t]) by_vertex[fill[v]++] = t;
+    const auto triangles_of = [&](std::uint32_t v) {
+      return std::vector<std::size_t>(
+          by_vertex.begin() + static_cast<std::ptrdiff_t>(start[v]),
+          by_vertex.begin() + static_cast<std::ptrdiff_t>(start[v + 1]));
     };
-    for (std::uint32_t v = 0; v < around.size() && !changed; ++v) {
+    // Whether the mesh has the edge ab, or the triangle with the corners of t, read
+    // from the triangles of a: no index of the whole mesh is needed.
+    const auto has_edge = [&](std::uint32_t a, std::uint32_t b) {
+      for (std::size_t k = start[a]; k < start[a + 1]; ++k) {
+        const Tri& tri = mesh.triangles[by_vertex[k]];
+        if (tri[0] == b || tri[1] == b || tri[2] == b) return true;
+      }
+      return false;
+    };
+    const auto has_triangle = [&](Tri t) {
+      std::sort(t.begin(), t.end());
+      for (std::size_t k = start[t[0]]; k < start[t[0] + 1]; ++k) {
+        Tri tri = mesh.triangles[by_vertex[k]];
+        std::sort(tri.begin(), tri.end());
+        if (tri == t) return true;
+      }
+      return false;
+    };
+    for (std::uint32_t v = 0; v < mesh.vertices.size() && !changed; ++v) {
       // Two fans need at least three triangles each.
-      if (around[v].size() < 6 || one_closed_fan(mesh, v, around[v])) continue;
-      const std::vector<Fan> fans = closed_fans(mesh, v, around[v]);
+      if (start[v + 1] - start[v] < 6) continue;
+      const std::vector<std::size_t> around = triangles_of(v);
+      if (one_closed_fan(mesh, v, around)) continue;
+      const std::vector<Fan> fans = closed_fans(mesh, v, around);
       if (fans.size() < 2) continue;
-      index_mesh();
       const Fan& cone = *std::max_element(fans.begin(), fans.end(), [&](const Fan& a, const Fan& b) {
         return height_ratio(mesh.vertices, v, a) < height_ratio(mesh.vertices, v, b);
       });
       const std::vector<Tri> cap = clip_ears(mesh.vertices, cone.rim, rim_plane(mesh.vertices, cone.rim).normal);
       bool fresh = !cap.empty();
-      for (const Tri& t : cap) {
-        Tri key = t;
-        std::sort(key.begin(), key.end());
-        fresh &= !sorted_triangles.count(key);
-      }
       std::set<std::pair<std::uint32_t, std::uint32_t>> rim_edges;
       for (std::size_t i = 0; i < cone.rim.size(); ++i) rim_edges.insert(edge(cone.rim[i], cone.rim[(i + 1) % cone.rim.size()]));
-      for (const Tri& t : cap)
+      for (const Tri& t : cap) {
+        fresh &= !has_triangle(t);
         for (int k = 0; k < 3; ++k) {
           const auto e = edge(t[k], t[(k + 1) % 3]);
-          if (!rim_edges.count(e)) fresh &= !edges.count(e);  // a diagonal must be a new edge
+          if (!rim_edges.count(e))
+            fresh &= !has_edge(e.first, e.second);  // a diagonal must be a new edge
         }
+      }
       if (!fresh) continue;
       replace_fan(mesh, cone.triangles, cap);
       ++caps;
