@@ -69,6 +69,10 @@ class SpaceGrid {
   /// removing an item there then changes only that cell's list, never the table, so
   /// threads may do so in cells no other thread reads at the time.
   void add_cells(Vec3 q, double R);
+  /// Makes room for `cells` cells in all, so that adding up to that many moves no cell.
+  void reserve(std::size_t cells);
+  /// The number of cells made so far.
+  std::size_t cell_count() const { return used_; }
   /// True when no two cells of the box [lo, hi] share a key (keys wrap after 2^21 cells
   /// per axis, which only makes queries slower, but cells sharing a key are no longer
   /// apart).
@@ -110,6 +114,7 @@ class SpaceGrid {
   bool any_item_in_box(Vec3 q, double R, Pred&& pred) const;
   const std::vector<Item>* items_of(std::uint64_t key) const;
   Cell& cell_at(std::uint64_t key);                // adds the cell when missing
+  void rehash(std::size_t slots);                  // moves every cell to a table of `slots`
   std::size_t slot_of(std::uint64_t key) const;    // its slot, or the empty one it would take
   static std::uint64_t pack(std::int64_t i, std::int64_t j, std::int64_t k);
   std::int64_t coord(double v) const;
@@ -211,9 +216,9 @@ class SurfacePacking {
   std::vector<DiskId> ids() const;
   /// Renumbers the live disks 0, 1, ... in the order of a Z-order curve through the
   /// neighbour grid's cells (free ids dropped), and returns their old ids in that order.
-  /// Disks near one another then sit near one another in memory: relaxation of the
-  /// elephant at 10^5 disks on one core 2.1-2.4 -> 1.8-1.9 s, and on two cores, where
-  /// each thread's writes stay off the cache lines the other reads, 1.4-1.6 -> 1.24 s.
+  /// Disks near one another then sit near one another in memory: relaxation (10
+  /// sweeps) of the elephant's sample at 10^5 disks, darts' order against this one,
+  /// 2.1-2.4 -> 1.8-1.9 s on one core, 1.4-1.6 -> 1.24 s on two.
   /// Ids taken before name other disks afterwards.
   std::vector<DiskId> order_by_place();
 
