@@ -173,11 +173,6 @@ std::size_t cap_bow_ties(SurfaceMesh& mesh) {
     std::vector<std::size_t> fill(start.begin(), start.end() - 1);
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
       for (const std::uint32_t v : mesh.triangles[t]) by_vertex[fill[v]++] = t;
-    const auto triangles_of = [&](std::uint32_t v) {
-      return std::vector<std::size_t>(
-          by_vertex.begin() + static_cast<std::ptrdiff_t>(start[v]),
-          by_vertex.begin() + static_cast<std::ptrdiff_t>(start[v + 1]));
-    };
     // Whether the mesh has the edge ab, or the triangle with the corners of t, read
     // from the triangles of a: no index of the whole mesh is needed.
     const auto has_edge = [&](std::uint32_t a, std::uint32_t b) {
@@ -196,10 +191,12 @@ std::size_t cap_bow_ties(SurfaceMesh& mesh) {
       }
       return false;
     };
+    std::vector<std::size_t> around;  // v's triangles, in one buffer for every v
     for (std::uint32_t v = 0; v < mesh.vertices.size() && !changed; ++v) {
       // Two fans need at least three triangles each.
       if (start[v + 1] - start[v] < 6) continue;
-      const std::vector<std::size_t> around = triangles_of(v);
+      around.assign(by_vertex.begin() + static_cast<std::ptrdiff_t>(start[v]),
+                    by_vertex.begin() + static_cast<std::ptrdiff_t>(start[v + 1]));
       if (one_closed_fan(mesh, v, around)) continue;
       const std::vector<Fan> fans = closed_fans(mesh, v, around);
       if (fans.size() < 2) continue;
