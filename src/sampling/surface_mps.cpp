@@ -13,6 +13,7 @@
 #include <map>
 #include <utility>
 
+#include "../geometry/threads.h"
 #include "../voids/final_check.h"
 #include "curve_layout.h"
 #include "disktune/errors.h"
@@ -182,6 +183,23 @@ void sample_curves(SurfacePacking& packing, Rng& rng) {
   }
 }
 
+// fill(from, to, part) for the items [0, count) in chunks, on the default threads, each
+// chunk with a `part` of its own; then join(part) for the chunks in order: the result of
+// one loop over the items, whatever the thread count. The sampler's scans that only read
+// the packing (which cells one disk covers, which darts land uncovered) run so; the
+// darts' insertions stay in order, on one thread.
+template <class Part, class Fill, class Join>
+void ordered_chunks(std::size_t count, Fill&& fill, Join&& join) {
+  // Some 64 chunks where the items are few (a sphere of 320 triangles, each split into
+  // a thousand cells), else 512 items each.
+  const std::size_t chunk_size = std::clamp<std::size_t>(count / 64, 1, 512);
+  std::vector<Part> parts((count + chunk_size - 1) / chunk_size);
+  detail::parallel_for(parts.size(), detail::thread_count(0), [&](std::size_t chunk, unsigned) {
+    fill(chunk * chunk_size, std::min(count, (chunk + 1) * chunk_size), parts[chunk]);
+  });
+  for (Part& part : parts) join(part);
+}
+
 // Keeps each dart that no disk covers, the darts kept before it included, as throwing
 // them one at a time in their order does, but in two passes: first the darts that the
 // disks already there cover are dropped, asked in the order of `group` (darts of one
@@ -205,8 +223,15 @@ void keep_uncovered(SurfacePacking& packing, std::vector<SurfacePoint> darts,
   // The darts no disk covered, each as its rank in the throw (high half) and its place
   // in `placed` (low half), so that sorting the numbers puts them in the throw's order.
   std::vector<std::uint64_t> open;
-  for (std::uint32_t at = 0; at < placed.size(); ++at)
-    if (!packing.covered(placed[at])) open.push_back(std::uint64_t{rank[at]} << 32 | at);
+  ordered_chunks<std::vector<std::uint64_t>>(
+      placed.size(),
+      [&](std::size_t from, std::size_t to, std::vector<std::uint64_t>& part) {
+        for (auto at = static_cast<std::uint32_t>(from); at < to; ++at)
+          if (!packing.covered(placed[at])) part.push_back(std::uint64_t{rank[at]} << 32 | at);
+      },
+      [&](const std::vector<std::uint64_t>& part) {
+        open.insert(open.end(), part.begin(), part.end());
+      });
   std::sort(open.begin(), open.end());
   for (const std::uint64_t key : open) {
     const SurfacePoint& q = placed[static_cast<std::uint32_t>(key)];
@@ -257,8 +282,12 @@ class Cells {
   }
   // A point uniformly distributed over the cell.
   SurfacePoint dart(const Cell& c, Rng& rng) const {
+    const double s = uniform01(rng);
+    return dart(c, s, uniform01(rng));
+  }
+  /// The dart of the two uniform numbers s and w.
+  SurfacePoint dart(const Cell& c, double s, double w) const {
     const auto p = corners(c);
-    double s = uniform01(rng), w = uniform01(rng);
     if (s + w > 1) s = 1 - s, w = 1 - w;
     return {p[0] + (p[1] - p[0]) * s + (p[2] - p[0]) * w, c.triangle};
   }
@@ -300,22 +329,28 @@ bool covered_by_one(const SurfacePacking& packing, const Cells& cells, const Cel
 // once it is no wider than `side`, however long it still is: splitting it further would
 // make (length / side)^2 cells, where its area needs a few.
 void uncovered_cells(const SurfacePacking& packing, const Cells& cells, double side, std::vector<Cell>& out) {
-  std::vector<Cell> stack;
-  DiskId last = kNoDisk;
-  for (std::uint32_t t = 0; t < packing.domain().triangles().size(); ++t) {
-    stack.push_back({t, 0, 0, 0, true});
-    while (!stack.empty()) {
-      const Cell c = stack.back();
-      stack.pop_back();
-      if (covered_by_one(packing, cells, c, last)) continue;
-      const bool thin_sliver = cells.longest(c) > 64 * side && 2 * cells.area(c) <= cells.longest(c) * side;
-      if (cells.longest(c) <= side || thin_sliver || c.level == kDeepestLevel) {
-        out.push_back(c);
-      } else {
-        for (const Cell& k : Cells::children(c)) stack.push_back(k);
+  const auto fill = [&](std::size_t from, std::size_t to, std::vector<Cell>& found) {
+    std::vector<Cell> stack;
+    DiskId last = kNoDisk;
+    for (auto t = static_cast<std::uint32_t>(from); t < to; ++t) {
+      stack.push_back({t, 0, 0, 0, true});
+      while (!stack.empty()) {
+        const Cell c = stack.back();
+        stack.pop_back();
+        if (covered_by_one(packing, cells, c, last)) continue;
+        const bool thin_sliver =
+            cells.longest(c) > 64 * side && 2 * cells.area(c) <= cells.longest(c) * side;
+        if (cells.longest(c) <= side || thin_sliver || c.level == kDeepestLevel) {
+          found.push_back(c);
+        } else {
+          for (const Cell& k : Cells::children(c)) stack.push_back(k);
+        }
       }
     }
-  }
+  };
+  ordered_chunks<std::vector<Cell>>(
+      packing.domain().triangles().size(), fill,
+      [&](const std::vector<Cell>& found) { out.insert(out.end(), found.begin(), found.end()); });
 }
 
 // Darts by area into the cells, as many as there are cells; then the cells that one
@@ -328,25 +363,43 @@ void dart_level(SurfacePacking& packing, const Cells& cells, double side, std::v
   std::vector<SurfacePoint> darts(active.size());
   std::vector<std::uint32_t> cell_of(active.size());
   {
+    // Three numbers a dart, drawn in order, then made into darts on every core.
+    std::vector<double> u(3 * active.size());
+    for (double& x : u) x = uniform01(rng);
     const detail::WeightPicker pick(active.size(),
                                     [&](std::size_t k) { return cells.area(active[k]); });
-    for (std::size_t k = 0; k < active.size(); ++k) {
-      cell_of[k] = static_cast<std::uint32_t>(pick(uniform01(rng)));
-      darts[k] = cells.dart(active[cell_of[k]], rng);
-    }
+    ordered_chunks<char>(
+        active.size(),
+        [&](std::size_t from, std::size_t to, char&) {
+          for (std::size_t k = from; k < to; ++k) {
+            cell_of[k] = static_cast<std::uint32_t>(pick(u[3 * k]));
+            darts[k] = cells.dart(active[cell_of[k]], u[3 * k + 1], u[3 * k + 2]);
+          }
+        },
+        [](char) {});
   }
   keep_uncovered(packing, std::move(darts), cell_of, active.size());
-  std::vector<Cell> next;
-  DiskId last = kNoDisk;
-  for (const Cell& c : active) {
-    if (covered_by_one(packing, cells, c, last)) continue;
-    if (c.level == kDeepestLevel || cells.longest(c) > side) {
-      parked.push_back(c);
-      continue;
+  struct Kept {
+    std::vector<Cell> next, parked;
+  };
+  const auto fill = [&](std::size_t from, std::size_t to, Kept& kept) {
+    DiskId last = kNoDisk;
+    for (std::size_t a = from; a < to; ++a) {
+      const Cell& c = active[a];
+      if (covered_by_one(packing, cells, c, last)) continue;
+      if (c.level == kDeepestLevel || cells.longest(c) > side) {
+        kept.parked.push_back(c);
+        continue;
+      }
+      for (const Cell& k : Cells::children(c))
+        if (!covered_by_one(packing, cells, k, last)) kept.next.push_back(k);
     }
-    for (const Cell& k : Cells::children(c))
-      if (!covered_by_one(packing, cells, k, last)) next.push_back(k);
-  }
+  };
+  std::vector<Cell> next;
+  ordered_chunks<Kept>(active.size(), fill, [&](const Kept& kept) {
+    next.insert(next.end(), kept.next.begin(), kept.next.end());
+    parked.insert(parked.end(), kept.parked.begin(), kept.parked.end());
+  });
   active.swap(next);
 }
 
@@ -445,11 +498,23 @@ SurfacePacking detail::sample_mps_unchecked(std::shared_ptr<const SurfaceDomain>
   // uniform point of that void, which, within the cell, covers all of it; a sliver
   // longer than the radius gets disks until no void is left.
   for (std::size_t i = active.size(); i > 1; --i) std::swap(active[i - 1], active[uniform_index(rng, i)]);
+  // Which cells hold a void now, on every core: a disk added below only shrinks voids,
+  // so a cell without one is passed over as the loop would pass it.
+  std::vector<char> holed(active.size(), 1);
+  ordered_chunks<std::vector<SurfaceVoidPoint>>(
+      active.size(),
+      [&](std::size_t from, std::size_t to, std::vector<SurfaceVoidPoint>& found) {
+        for (std::size_t k = from; k < to; ++k)
+          if (cells.longest(active[k]) <= side)
+            holed[k] = has_void(packing, cells, active[k], found);
+      },
+      [](const std::vector<SurfaceVoidPoint>&) {});
   std::vector<SurfaceVoidPoint> found;
-  for (const Cell& c : active) {
+  for (std::size_t k = 0; k < active.size(); ++k) {
+    const Cell& c = active[k];
     if (cells.longest(c) > side) {
       fill_sliver(packing, cells, c, rng);
-    } else if (has_void(packing, cells, c, found)) {
+    } else if (holed[k] && has_void(packing, cells, c, found)) {
       const SurfacePoint q = point_in_void(packing, cells, c, smallest, rng);
       if (!packing.conflicts(q)) packing.insert(q);
     }
