@@ -7,6 +7,7 @@
 
 #include "disktune/density.h"
 #include "disktune/sampling.h"
+#include "disktune/threads.h"
 #include "test_util.h"
 
 namespace disktune {
@@ -70,6 +71,22 @@ TEST(Mps, SameSeedSameBitsDifferentSeedDifferentSample) {
   };
   EXPECT_EQ(run(5), run(5));
   EXPECT_NE(run(5), run(6));
+}
+
+// The darts' levels keep their cells on every core, in chunks joined in order: one, two
+// and three threads give the same bits (r = 0.005: some 40,000 cells a level).
+TEST(Mps, SameSeedSameBitsOnAnyNumberOfThreads) {
+  const PeriodicBox box(1.0, 0.7);
+  auto run = [&](unsigned threads) {
+    set_default_threads(threads);
+    Rng rng(3);
+    const auto centers = test::centers_of(sample_mps(box, 0.005, rng));
+    set_default_threads(0);
+    return centers;
+  };
+  const auto one = run(1);
+  EXPECT_EQ(run(2), one);
+  EXPECT_EQ(run(3), one);
 }
 
 TEST(Mps, EveryLevelSettingStaysExact) {

@@ -82,7 +82,7 @@ void DartGrid::prefetch_block(Cell b) const {
   }
 }
 
-void DartGrid::keep_uncovered(Cell c, int level, bool split, CellList& out) const {
+void DartGrid::keep_uncovered(Cell c, int level, bool split, std::vector<Cell>& out) const {
   const Cell base = base_of(c, level);
   if (filled(base)) return;
   // A disk covers a (sub)cell when it covers the corner farthest from its center. The

@@ -42,7 +42,7 @@ class DartGrid {
 
   /// Appends to `out` the children of cell c (at `level`) that no single disk covers
   /// (the cheap test, enough for most cells), or c itself when `split` is false.
-  void keep_uncovered(Cell c, int level, bool split, CellList& out) const;
+  void keep_uncovered(Cell c, int level, bool split, std::vector<Cell>& out) const;
   /// Exact test: false when some point of the cell is uncovered, in which case
   /// `witness` is set to one such point, drawn uniformly from the uncovered part of the
   /// cell when a few darts find it (a corner of the uncovered part otherwise).

@@ -13,8 +13,9 @@
 #include <algorithm>
 #include <chrono>
 
-#include "dart_grid.h"
+#include "../geometry/threads.h"
 #include "../voids/final_check.h"
+#include "dart_grid.h"
 #include "disktune/sampling.h"
 
 namespace disktune {
@@ -98,9 +99,17 @@ Packing sample_mps(const PeriodicBox& box, double r, Rng& rng, const MpsOptions&
     lap(st.darts_seconds);
     // Keep what is still uncovered, split in four for the next level.
     const bool split = level + 1 < options.levels;
+    // On every core, in chunks joined in order (the cells only read the grid): the same
+    // cells whatever the thread count.
     CellList next;
     next.reserve(split ? active.size() * 2 : active.size());
-    for (const Cell c : active) grid.keep_uncovered(c, level, split, next);
+    detail::ordered_chunks<std::vector<Cell>>(
+        active.size(), detail::thread_count(0),
+        [&](std::size_t from, std::size_t to, std::vector<Cell>& kept) {
+          for (std::size_t k = from; k < to; ++k)
+            grid.keep_uncovered(active[k], level, split, kept);
+        },
+        [&](const std::vector<Cell>& kept) { next.insert(next.end(), kept.begin(), kept.end()); });
     active.swap(next);
     lap(st.prune_seconds);
   }

@@ -1,9 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Maximal Poisson-disk sampling on a surface, unbiased as Ebeida et al.'s sampler of the
 // box is: fixed disks first (on the feature corners, evenly along the feature curves,
-// then by 1D darts into what is left uncovered of the fixed curves), then darts by area over the surface and over ever
-// smaller cells around the uncovered part, then each remaining void gets a disk at a
-// uniform point of it (never at its vertices, which would bias the spacing).
+// then by 1D darts into what is left uncovered of the fixed curves), then darts by area over the
+// surface and over ever smaller cells around the uncovered part, then each remaining void gets a
+// disk at a uniform point of it (never at its vertices, which would bias the spacing). The scans
+// that only read the packing (which cells one disk covers, which darts land uncovered,
+// which cells hold a void) run on every core, in chunks joined in order; insertions stay
+// in order on one thread: the same sample for any number of threads.
 #include "surface_mps.h"
 
 #include <algorithm>
@@ -183,23 +186,6 @@ void sample_curves(SurfacePacking& packing, Rng& rng) {
   }
 }
 
-// fill(from, to, part) for the items [0, count) in chunks, on the default threads, each
-// chunk with a `part` of its own; then join(part) for the chunks in order: the result of
-// one loop over the items, whatever the thread count. The sampler's scans that only read
-// the packing (which cells one disk covers, which darts land uncovered) run so; the
-// darts' insertions stay in order, on one thread.
-template <class Part, class Fill, class Join>
-void ordered_chunks(std::size_t count, Fill&& fill, Join&& join) {
-  // Some 64 chunks where the items are few (a sphere of 320 triangles, each split into
-  // a thousand cells), else 512 items each.
-  const std::size_t chunk_size = std::clamp<std::size_t>(count / 64, 1, 512);
-  std::vector<Part> parts((count + chunk_size - 1) / chunk_size);
-  detail::parallel_for(parts.size(), detail::thread_count(0), [&](std::size_t chunk, unsigned) {
-    fill(chunk * chunk_size, std::min(count, (chunk + 1) * chunk_size), parts[chunk]);
-  });
-  for (Part& part : parts) join(part);
-}
-
 // Keeps each dart that no disk covers, the darts kept before it included, as throwing
 // them one at a time in their order does, but in two passes: first the darts that the
 // disks already there cover are dropped, asked in the order of `group` (darts of one
@@ -223,8 +209,8 @@ void keep_uncovered(SurfacePacking& packing, std::vector<SurfacePoint> darts,
   // The darts no disk covered, each as its rank in the throw (high half) and its place
   // in `placed` (low half), so that sorting the numbers puts them in the throw's order.
   std::vector<std::uint64_t> open;
-  ordered_chunks<std::vector<std::uint64_t>>(
-      placed.size(),
+  detail::ordered_chunks<std::vector<std::uint64_t>>(
+      placed.size(), detail::thread_count(0),
       [&](std::size_t from, std::size_t to, std::vector<std::uint64_t>& part) {
         for (auto at = static_cast<std::uint32_t>(from); at < to; ++at)
           if (!packing.covered(placed[at])) part.push_back(std::uint64_t{rank[at]} << 32 | at);
@@ -348,8 +334,8 @@ void uncovered_cells(const SurfacePacking& packing, const Cells& cells, double s
       }
     }
   };
-  ordered_chunks<std::vector<Cell>>(
-      packing.domain().triangles().size(), fill,
+  detail::ordered_chunks<std::vector<Cell>>(
+      packing.domain().triangles().size(), detail::thread_count(0), fill,
       [&](const std::vector<Cell>& found) { out.insert(out.end(), found.begin(), found.end()); });
 }
 
@@ -368,8 +354,8 @@ void dart_level(SurfacePacking& packing, const Cells& cells, double side, std::v
     for (double& x : u) x = uniform01(rng);
     const detail::WeightPicker pick(active.size(),
                                     [&](std::size_t k) { return cells.area(active[k]); });
-    ordered_chunks<char>(
-        active.size(),
+    detail::ordered_chunks<char>(
+        active.size(), detail::thread_count(0),
         [&](std::size_t from, std::size_t to, char&) {
           for (std::size_t k = from; k < to; ++k) {
             cell_of[k] = static_cast<std::uint32_t>(pick(u[3 * k]));
@@ -396,7 +382,7 @@ void dart_level(SurfacePacking& packing, const Cells& cells, double side, std::v
     }
   };
   std::vector<Cell> next;
-  ordered_chunks<Kept>(active.size(), fill, [&](const Kept& kept) {
+  detail::ordered_chunks<Kept>(active.size(), detail::thread_count(0), fill, [&](const Kept& kept) {
     next.insert(next.end(), kept.next.begin(), kept.next.end());
     parked.insert(parked.end(), kept.parked.begin(), kept.parked.end());
   });
@@ -501,8 +487,8 @@ SurfacePacking detail::sample_mps_unchecked(std::shared_ptr<const SurfaceDomain>
   // Which cells hold a void now, on every core: a disk added below only shrinks voids,
   // so a cell without one is passed over as the loop would pass it.
   std::vector<char> holed(active.size(), 1);
-  ordered_chunks<std::vector<SurfaceVoidPoint>>(
-      active.size(),
+  detail::ordered_chunks<std::vector<SurfaceVoidPoint>>(
+      active.size(), detail::thread_count(0),
       [&](std::size_t from, std::size_t to, std::vector<SurfaceVoidPoint>& found) {
         for (std::size_t k = from; k < to; ++k)
           if (cells.longest(active[k]) <= side)
