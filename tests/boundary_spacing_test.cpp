@@ -165,7 +165,9 @@ void expect_bound(const DomainCase& c, const Packing& packing, const std::string
     EXPECT_GE(v.min_angle, 30 - 1e-9);
     EXPECT_LE(v.max_angle, 120 + 1e-9);
   }
-  if (laid_out && !c.sharp) EXPECT_LE(v.longest_step, std::sqrt(2.0));
+  if (laid_out && !c.sharp) {
+    EXPECT_LE(v.longest_step, std::sqrt(2.0));
+  }
 }
 
 TEST(BoundarySpacing, MpsKeepsTheAngleBound) {

@@ -25,7 +25,6 @@
 #include <iterator>
 #include <memory>
 #include <numeric>
-#include <set>
 #include <type_traits>
 #include <unordered_map>
 #include <utility>
@@ -911,12 +910,17 @@ SurfaceMesh restricted_delaunay(const SurfacePacking& packing, Coverage coverage
       samples, packing.domain(), patch, along_features, detail::DualArithmetic::filtered, nullptr,
       coverage == Coverage::maximal ? packing.max_radius() : 0, threads,
       reuse ? reuse->state_.get() : nullptr);
-  // The feature curves' consecutive disks that the mesh joins.
-  std::set<std::pair<std::uint32_t, std::uint32_t>> edges;
+  // The feature curves' consecutive disks that the mesh joins (none without curves: a
+  // set of the mesh's edges was 4 % of the elephant's mesh at 10^4 vertices).
+  if (along_features.empty()) return mesh;
+  std::vector<std::uint64_t> edges;
+  edges.reserve(3 * mesh.triangles.size());
   for (const auto& t : mesh.triangles)
-    for (int k = 0; k < 3; ++k) edges.insert(std::minmax(t[k], t[(k + 1) % 3]));
+    for (int k = 0; k < 3; ++k) edges.push_back(edge_key(t[k], t[(k + 1) % 3]));
+  std::sort(edges.begin(), edges.end());
   for (const auto& e : along_features)
-    if (edges.count(std::minmax(e[0], e[1]))) mesh.feature_edges.push_back(e);
+    if (std::binary_search(edges.begin(), edges.end(), edge_key(e[0], e[1])))
+      mesh.feature_edges.push_back(e);
   return mesh;
 }
 
