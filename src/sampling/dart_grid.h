@@ -48,13 +48,6 @@ class DartGrid {
   /// cell when a few darts find it (a corner of the uncovered part otherwise).
   template <class Rng>
   bool covered_exactly(Cell c, int level, Rng& uniform01, Vec2& witness) const;
-  /// The same test without a witness (it draws nothing): true when the disks cover
-  /// every point of the cell.
-  bool covered_exactly(Cell c, int level) const {
-    Vec2 disks[32], vertices[64];
-    int n = 0;
-    return uncovered_part(c, level, disks, n, vertices) == 0;
-  }
 
  private:
   std::size_t index(Cell b) const { return static_cast<std::size_t>(b.iy) * mx_ + b.ix; }
@@ -64,13 +57,6 @@ class DartGrid {
   int gather(Cell base, Vec2 q, double reach, Vec2 (&out)[32]) const;
   /// Uncovered vertices of the uncovered part of cell [lo, hi]; returns the count.
   int uncovered_vertices(Vec2 lo, Vec2 hi, const Vec2* disks, int n, Vec2 (&out)[64]) const;
-  /// The disks that may cover part of cell c (`n` of them) and the vertices of its
-  /// uncovered part; returns their count (0: all of it covered).
-  int uncovered_part(Cell c, int level, Vec2 (&disks)[32], int& n, Vec2 (&vertices)[64]) const {
-    const Vec2 lo = corner(c, level), hi = lo + size(level), mid = (lo + hi) * 0.5;
-    n = gather(base_of(c, level), mid, r_ + norm(hi - mid), disks);
-    return uncovered_vertices(lo, hi, disks, n, vertices);
-  }
 
   const Frame& frame_;
   double r_;
@@ -81,9 +67,12 @@ class DartGrid {
 
 template <class Rng>
 bool DartGrid::covered_exactly(Cell c, int level, Rng& uniform01, Vec2& witness) const {
-  Vec2 disks[32], vertices[64];
-  int n = 0;
-  const int nv = uncovered_part(c, level, disks, n, vertices);
+  const Vec2 lo = corner(c, level), hi = lo + size(level);
+  Vec2 disks[32];
+  const Vec2 mid = (lo + hi) * 0.5;
+  const int n = gather(base_of(c, level), mid, r_ + norm(hi - mid), disks);
+  Vec2 vertices[64];
+  const int nv = uncovered_vertices(lo, hi, disks, n, vertices);
   if (nv == 0) return true;
   // The uncovered part lies in the convex hull of its vertices (its arcs bulge into
   // it), so darts go into their bounding box.

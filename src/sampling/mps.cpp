@@ -121,23 +121,11 @@ Packing sample_mps(const PeriodicBox& box, double r, Rng& rng, const MpsOptions&
   for (std::size_t i = active.size(); i > 1; --i) {
     std::swap(active[i - 1], active[uniform_index(rng, i)]);
   }
-  // Which cells hold a void now, on every core: a disk added below only covers more, so
-  // a cell without one is passed over as the loop would pass it, drawing nothing.
-  std::vector<char> holed(active.size());
-  detail::ordered_chunks<char>(
-      active.size(), detail::thread_count(0),
-      [&](std::size_t from, std::size_t to, char&) {
-        for (std::size_t k = from; k < to; ++k)
-          holed[k] =
-              !grid.filled(grid.base_of(active[k], last)) && !grid.covered_exactly(active[k], last);
-      },
-      [](char) {});
   auto u01 = [&rng] { return uniform01(rng); };
-  for (std::size_t k = 0; k < active.size(); ++k) {
-    const Cell c = active[k];
+  for (const Cell c : active) {
     const Cell base = grid.base_of(c, last);
     Vec2 z;
-    if (!holed[k] || grid.filled(base) || grid.covered_exactly(c, last, u01, z)) continue;
+    if (grid.filled(base) || grid.covered_exactly(c, last, u01, z)) continue;
     grid.put(base, z);
     ++st.void_disks;
   }
