@@ -13,6 +13,7 @@
 
 #include "disktune/frame.h"
 #include "disktune/geometry.h"
+#include "disktune/huge_page_allocator.h"
 
 namespace disktune {
 
@@ -67,7 +68,9 @@ class SpatialGrid {
     double radius;
     DiskId id;
   };
-  std::vector<Slot> slots_;  // centers and radii beside the ids: queries read no other array
+  // Centers and radii beside the ids: queries read no other array. Huge pages: 92 MB at
+  // 10^6 disks, read at random.
+  std::vector<Slot, detail::HugePageAllocator<Slot>> slots_;
 };
 
 namespace detail {

@@ -61,7 +61,7 @@ void SpatialGrid::grow() {
                        "smaller");
   }
   const int new_cap = old_cap * 2;
-  std::vector<Slot> slots(count_.size() * new_cap);
+  std::vector<Slot, detail::HugePageAllocator<Slot>> slots(count_.size() * new_cap);
   for (std::size_t c = 0; c < count_.size(); ++c) {
     std::copy_n(&slots_[c * old_cap], count_[c], &slots[c * new_cap]);
   }

@@ -11,8 +11,8 @@
 
 #include "disktune/frame.h"
 #include "disktune/geometry.h"
+#include "disktune/huge_page_allocator.h"
 #include "disktune/tolerance.h"
-#include "../packing/huge_page_allocator.h"
 
 namespace disktune::detail {
 
