@@ -14,6 +14,7 @@
 #include "disktune/fiber_statistics.h"
 #include "disktune/frame.h"
 #include "disktune/geometry.h"
+#include "disktune/huge_page_allocator.h"
 #include "disktune/io.h"
 #include "disktune/mesh.h"
 #include "disktune/mesh_io.h"
