@@ -10,6 +10,8 @@
 #include <utility>
 #include <vector>
 
+#include "../domain/half_edges.h"
+
 namespace disktune::detail {
 namespace {
 
@@ -163,16 +165,9 @@ std::size_t cap_bow_ties(SurfaceMesh& mesh) {
   std::size_t caps = 0;
   for (bool changed = true; changed;) {
     changed = false;
-    // The triangles of each vertex, in one array (start[v] .. start[v + 1]): a vector
-    // per vertex cost 10^4 allocations a pass, as much as the rest of the pass.
-    std::vector<std::size_t> start(mesh.vertices.size() + 1, 0),
-        by_vertex(3 * mesh.triangles.size());
-    for (const Tri& tri : mesh.triangles)
-      for (const std::uint32_t v : tri) ++start[v + 1];
-    for (std::size_t v = 0; v < mesh.vertices.size(); ++v) start[v + 1] += start[v];
-    std::vector<std::size_t> fill(start.begin(), start.end() - 1);
-    for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
-      for (const std::uint32_t v : mesh.triangles[t]) by_vertex[fill[v]++] = t;
+    const detail::VertexTriangles of_vertex =
+        detail::triangles_by_vertex(mesh.triangles, mesh.vertices.size());
+    const std::vector<std::size_t>&start = of_vertex.start, &by_vertex = of_vertex.by_vertex;
     // Whether the mesh has the edge ab, or the triangle with the corners of t, read
     // from the triangles of a: no index of the whole mesh is needed.
     const auto has_edge = [&](std::uint32_t a, std::uint32_t b) {

@@ -29,6 +29,7 @@
 #include <unordered_map>
 #include <utility>
 
+#include "../domain/half_edges.h"
 #include "../geometry/threads.h"
 #include "bow_tie_caps.h"
 #include "disktune/errors.h"
@@ -169,6 +170,50 @@ std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) {
   return a < b ? std::uint64_t{a} << 32 | b : std::uint64_t{b} << 32 | a;
 }
 
+/// The triangles of a mesh that hold an edge, read from the triangles of one end (every
+/// edge has few): the mending passes below ask about a few edges each, where a hash
+/// table of every edge cost more than the rest of them. Dropped triangles leave the
+/// counts.
+class EdgeTriangles {
+ public:
+  explicit EdgeTriangles(const SurfaceMesh& mesh)
+      : mesh_(mesh),
+        around_(detail::triangles_by_vertex(mesh.triangles, mesh.vertices.size())),
+        dropped_(mesh.triangles.size(), 0) {}
+  /// The triangles not dropped that hold edge ab, in increasing order.
+  std::vector<std::size_t> on(std::uint32_t a, std::uint32_t b) const {
+    std::vector<std::size_t> out;
+    for_each_on(a, b, [&](std::size_t t) { out.push_back(t); });
+    return out;
+  }
+  std::size_t uses(std::uint32_t a, std::uint32_t b) const {
+    std::size_t n = 0;
+    for_each_on(a, b, [&](std::size_t) { ++n; });
+    return n;
+  }
+  void drop(std::size_t t) { dropped_[t] = 1; }
+  /// Removes the dropped triangles from the mesh (which this then no longer describes).
+  void erase_dropped(SurfaceMesh& mesh) const {
+    std::size_t kept = 0;
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+      if (!dropped_[t]) mesh.triangles[kept++] = mesh.triangles[t];
+    mesh.triangles.resize(kept);
+  }
+
+ private:
+  template <class F>
+  void for_each_on(std::uint32_t a, std::uint32_t b, F&& f) const {
+    for (std::size_t k = around_.start[a]; k < around_.start[a + 1]; ++k) {
+      const std::size_t t = around_.by_vertex[k];
+      const auto& tri = mesh_.triangles[t];
+      if (!dropped_[t] && (tri[0] == b || tri[1] == b || tri[2] == b)) f(t);
+    }
+  }
+  const SurfaceMesh& mesh_;
+  detail::VertexTriangles around_;
+  std::vector<char> dropped_;
+};
+
 /// Removes the triangles that join two sides of a feature (vertices in two different
 /// patches) and share an edge with two or more other triangles. Near a sharp crease a
 /// dual edge can cross it, so the triangles on either side close a tetrahedron over the
@@ -185,17 +230,19 @@ void drop_crossings(SurfaceMesh& mesh, const std::vector<std::uint32_t>& sample_
     return false;
   };
   if (std::none_of(mesh.triangles.begin(), mesh.triangles.end(), crosses)) return;
-  std::unordered_map<std::uint64_t, int> uses;
-  uses.reserve(2 * mesh.triangles.size());
-  for (const auto& t : mesh.triangles)
-    for (int k = 0; k < 3; ++k) ++uses[edge_key(t[k], t[(k + 1) % 3])];
-  const auto extra = [&](const std::array<std::uint32_t, 3>& t) {
-    if (!crosses(t)) return false;
+  EdgeTriangles edges(mesh);
+  std::vector<std::size_t> extra;  // all judged on the counts before any goes
+  for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
+    const auto& t = mesh.triangles[i];
+    if (!crosses(t)) continue;
     for (int k = 0; k < 3; ++k)
-      if (uses[edge_key(t[k], t[(k + 1) % 3])] > 2) return true;
-    return false;
-  };
-  mesh.triangles.erase(std::remove_if(mesh.triangles.begin(), mesh.triangles.end(), extra), mesh.triangles.end());
+      if (edges.uses(t[k], t[(k + 1) % 3]) > 2) {
+        extra.push_back(i);
+        break;
+      }
+  }
+  for (const std::size_t i : extra) edges.drop(i);
+  edges.erase_dropped(mesh);
 }
 
 /// Removes flaps: a triangle with one edge in no other triangle and its other two edges
@@ -205,23 +252,20 @@ void drop_crossings(SurfaceMesh& mesh, const std::vector<std::uint32_t>& sample_
 /// a hole). The lone edge must not be one of an open boundary: on an open surface it needs
 /// an end that is no fixed disk (`sample_patch` not kAnyPatch).
 void drop_flaps(SurfaceMesh& mesh, const std::vector<std::uint32_t>& sample_patch, bool closed) {
-  std::unordered_map<std::uint64_t, int> uses;
-  uses.reserve(2 * mesh.triangles.size());
-  for (const auto& t : mesh.triangles)
-    for (int k = 0; k < 3; ++k) ++uses[edge_key(t[k], t[(k + 1) % 3])];
-  // One at a time, the counts kept up to date: two flaps on one edge must not both go.
-  const auto flap = [&](const std::array<std::uint32_t, 3>& t) {
+  EdgeTriangles edges(mesh);
+  // One at a time, the counts without those dropped: two flaps on one edge must not both go.
+  for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
+    const auto& t = mesh.triangles[i];
     for (int k = 0; k < 3; ++k) {
       const std::uint32_t a = t[k], b = t[(k + 1) % 3], c = t[(k + 2) % 3];
-      if (uses[edge_key(a, b)] == 1 && uses[edge_key(b, c)] >= 3 && uses[edge_key(c, a)] >= 3 &&
+      if (edges.uses(a, b) == 1 && edges.uses(b, c) >= 3 && edges.uses(c, a) >= 3 &&
           (closed || sample_patch[a] != kAnyPatch || sample_patch[b] != kAnyPatch)) {
-        for (int e = 0; e < 3; ++e) --uses[edge_key(t[e], t[(e + 1) % 3])];
-        return true;
+        edges.drop(i);
+        break;
       }
     }
-    return false;
-  };
-  mesh.triangles.erase(std::remove_if(mesh.triangles.begin(), mesh.triangles.end(), flap), mesh.triangles.end());
+  }
+  edges.erase_dropped(mesh);
 }
 
 /// The fan of triangles around x from a to b that starts with `first` (which holds a
@@ -239,7 +283,7 @@ struct Fan {
 /// the crease (the one bent further from abx) gives way to a cap over its rim a y1 .. yk
 /// b, triangles from a, which holds ab: every edge is then in two triangles, x keeps one
 /// fan, and the feature edge stays. Nothing changes unless the cap's diagonals are new
-/// edges. One fan at a time, the edge map rebuilt after each (they are rare).
+/// edges. One fan at a time, the edges read anew after each (they are rare).
 void cap_fans_across_creases(SurfaceMesh& mesh, const std::vector<std::array<std::uint32_t, 2>>& feature_edges) {
   using Tri = std::array<std::uint32_t, 3>;
   const auto third = [](const Tri& t, std::uint32_t p, std::uint32_t q) {
@@ -254,14 +298,8 @@ void cap_fans_across_creases(SurfaceMesh& mesh, const std::vector<std::array<std
   };
   for (bool changed = !feature_edges.empty(); changed;) {
     changed = false;
-    std::unordered_map<std::uint64_t, std::vector<std::size_t>> with_edge;  // triangles by edge
-    with_edge.reserve(2 * mesh.triangles.size());
-    for (std::size_t i = 0; i < mesh.triangles.size(); ++i)
-      for (int k = 0; k < 3; ++k) with_edge[edge_key(mesh.triangles[i][k], mesh.triangles[i][(k + 1) % 3])].push_back(i);
-    const auto on = [&](std::uint32_t p, std::uint32_t q) {
-      const auto it = with_edge.find(edge_key(p, q));
-      return it == with_edge.end() ? std::vector<std::size_t>{} : it->second;
-    };
+    const EdgeTriangles edges(mesh);
+    const auto on = [&](std::uint32_t p, std::uint32_t q) { return edges.on(p, q); };
     for (const auto& feature : feature_edges) {
       const std::uint32_t a = feature[0], b = feature[1];  // plain names: lambdas below capture them
       const auto on_ab = on(a, b);
@@ -1101,9 +1139,13 @@ SurfaceMesh detail::restricted_delaunay(
     st.reach = covered_within;
     st.valid = true;
   }
-  cap_fans_across_creases(mesh, feature_edges);
-  drop_crossings(mesh, sample_patch);
-  drop_flaps(mesh, sample_patch, surface.is_closed());
+  // Each of these three mends edges in three or more triangles (rare: creases, thin
+  // parts), and each rebuilt a hash table of every edge: a third of a later mesh's time.
+  if (detail::some_edge_in_three(mesh.triangles, mesh.vertices.size())) {
+    cap_fans_across_creases(mesh, feature_edges);
+    drop_crossings(mesh, sample_patch);
+    drop_flaps(mesh, sample_patch, surface.is_closed());
+  }
   detail::cap_bow_ties(mesh);
   // Deterministic order whatever CGAL's internal one: by the triangles' vertex indices.
   std::sort(mesh.triangles.begin(), mesh.triangles.end());

@@ -82,14 +82,14 @@ SurfaceMeshCheck check_surface_mesh(const SurfaceMesh& mesh) {
     }
   });
 
-  std::vector<std::vector<std::size_t>> around(nv);
-  for (std::size_t t = 0; t < tris.size(); ++t) {
-    for (const std::size_t v : tris[t]) around[v].push_back(t);
-  }
+  const detail::VertexTriangles around = detail::triangles_by_vertex(tris, nv);
+  const std::vector<std::size_t>& first = around.start;
+  const auto lonely = [&](std::size_t v) { return first[v] == first[v + 1]; };
   for (std::size_t v = 0; v < nv; ++v) {
-    if (around[v].empty()) {
+    if (lonely(v)) {
       ++c.isolated_vertices;
-    } else if (detail::fan_count(v, around[v], tris) > 1) {
+    } else if (detail::fan_count(v, &around.by_vertex[first[v]], first[v + 1] - first[v], tris) >
+               1) {
       ++c.non_manifold_vertices;
     }
   }
@@ -101,12 +101,12 @@ SurfaceMeshCheck check_surface_mesh(const SurfaceMesh& mesh) {
   constexpr std::size_t kNone = static_cast<std::size_t>(-1);
   std::vector<std::size_t> comp_of_root(nv, kNone);
   for (std::size_t v = 0; v < nv; ++v) {
-    if (!around[v].empty() && comp_of_root[uf.find(v)] == kNone) comp_of_root[uf.find(v)] = c.components++;
+    if (!lonely(v) && comp_of_root[uf.find(v)] == kNone) comp_of_root[uf.find(v)] = c.components++;
   }
   const auto comp = [&](std::size_t v) { return comp_of_root[uf.find(v)]; };
   std::vector<long long> euler(c.components, 0), loops(c.components, 0);
   for (std::size_t v = 0; v < nv; ++v) {
-    if (around[v].empty()) continue;
+    if (lonely(v)) continue;
     ++euler[comp(v)];
     if (on_boundary[v] && boundary.find(v) == v) ++loops[comp(v)], ++c.boundary_loops;  // one root per loop
   }
