@@ -277,13 +277,30 @@ std::vector<std::uint32_t> triangles_with_voids(const SurfacePacking& packing, u
 // pulls the nearest free disk within two radii that can cover it (on its patch) until
 // it lies a tenth of that disk's radius inside, by a checked move (move_toward), or the
 // next nearest where that one has no room. A checked move opens no void, so the voids
-// only shrink, within the triangles found at first. False where some remains after
-// 16 rounds. `pulled` gets each disk moved (once a move).
+// only shrink, within the triangles found at first. Where a round moves no disk (each
+// void's disks held on all sides: a sliver between a fixed disk and a free one pressed
+// against it), the nearest disk that meets none there is pulled over each void anyway,
+// by a move checked for conflicts only: the void moves behind it, among disks with room
+// to close it, and the triangles near where the disk was are scanned from then on (a
+// move uncovers nothing farther). False where some void remains after 16 rounds.
+// `pulled` gets each disk moved (once a move).
 bool close_voids(SurfacePacking& packing, unsigned threads, std::size_t& moved,
                  std::vector<DiskId>& pulled) {
   std::vector<std::uint32_t> holed = triangles_with_voids(packing, threads);
   std::vector<SurfaceVoidPoint> voids;
   std::vector<std::pair<double, DiskId>> near;  // squared distance, disk
+  std::vector<std::uint32_t> uncovered;         // triangles near a disk pulled unchecked
+  // The free disks within two radii of void point v that can cover it, nearest first.
+  const auto disks_near = [&](const SurfaceVoidPoint& v) {
+    const PatchSet patch = packing.index().patch_of_triangle(v.at.triangle);
+    near.clear();
+    packing.for_each_near(v.at.p, 2 * packing.max_radius(), [&](DiskId q) {
+      if (!(packing.flags(q) & (kFixed | kFrozen)) &&
+          packing.share_patch(packing.patches(q), patch))
+        near.emplace_back(squared_norm(packing.center(q) - v.at.p), q);
+    });
+    std::sort(near.begin(), near.end());
+  };
   for (int round = 0;; ++round) {
     voids.clear();
     std::vector<std::uint32_t> still;
@@ -295,15 +312,9 @@ bool close_voids(SurfacePacking& packing, unsigned threads, std::size_t& moved,
     holed.swap(still);
     if (voids.empty()) return true;
     if (round == 16) return false;
+    const std::size_t moved_before = moved;
     for (const SurfaceVoidPoint& v : voids) {
-      const PatchSet patch = packing.index().patch_of_triangle(v.at.triangle);
-      near.clear();
-      packing.for_each_near(v.at.p, 2 * packing.max_radius(), [&](DiskId q) {
-        if (!(packing.flags(q) & (kFixed | kFrozen)) &&
-            packing.share_patch(packing.patches(q), patch))
-          near.emplace_back(squared_norm(packing.center(q) - v.at.p), q);
-      });
-      std::sort(near.begin(), near.end());
+      disks_near(v);
       // To `inside` of the void point, straight at it, then (a disk held on its way in by
       // a neighbour may pass beside it) from 25 and 50 degrees to either side.
       const Vec3 n = packing.index().plane(v.at.triangle).normal();
@@ -331,6 +342,25 @@ bool close_voids(SurfacePacking& packing, unsigned threads, std::size_t& moved,
       };
       close_one();
     }
+    if (moved > moved_before) continue;
+    // Stuck: every void's disks held. Pulled over it unchecked, the nearest that can go.
+    for (const SurfaceVoidPoint& v : voids) {
+      disks_near(v);
+      for (const auto& [d2, q] : near) {
+        const Vec3 c = packing.center(q);
+        const double d = std::sqrt(d2), inside = 0.9 * packing.radius(q);
+        if (d <= inside) break;  // covered by a move made since the scan
+        if (move_toward(packing, q, v.at.p + (c - v.at.p) * (inside / d), nullptr, false) > 0) {
+          ++moved;
+          pulled.push_back(q);
+          packing.index().triangles_near(c, packing.radius(q) * (1 + 1e-6), uncovered);
+          holed.insert(holed.end(), uncovered.begin(), uncovered.end());
+          break;
+        }
+      }
+    }
+    std::sort(holed.begin(), holed.end());
+    holed.erase(std::unique(holed.begin(), holed.end()), holed.end());
   }
 }
 
