@@ -367,8 +367,9 @@ TEST(Relaxation, AtTheEndPullsADiskOverAVoidHeldOnAllSides) {
   std::size_t same = 0;
   for (const DiskId id : at_end.ids()) {
     same += squared_norm(at_end.center(id) - every.center(id)) == 0;
-    if (start.flags(id) & kFixed)
+    if (start.flags(id) & kFixed) {
       EXPECT_EQ(squared_norm(at_end.center(id) - start.center(id)), 0.0);
+    }
   }
   EXPECT_LT(same, at_end.size()) << "the run fell back to checking every move";
 }
