@@ -7,9 +7,11 @@
 #include <future>
 #include <optional>
 #include <string>
+#include <system_error>
 #include <vector>
 
 #include "../domain/thickness_limits.h"
+#include "../geometry/threads.h"
 #include "../io/number_text.h"
 #include "../sampling/surface_mps.h"
 #include "../tuning/surface_tune.h"
@@ -134,8 +136,8 @@ std::optional<RemeshResult> remesh_at(const std::shared_ptr<const SurfaceDomain>
   // 6·10^4 (elephant and eight at 10^4 vertices, seeds 1-4 and 1-3: smallest angles
   // 33.1-37.9 degrees without it, 38.2-40.1 with, the other figures within noise).
   // The last line of defence, for the sample, tune and every move since: the packing's
-  // check runs beside the last mesh where the packing is final before it (both only read
-  // it; the mesh's serial parts leave a core idle).
+  // check runs beside the last mesh where the packing is final before it and more than
+  // one thread is allowed (both only read it; the mesh's serial parts leave a core idle).
   std::future<std::string> final_check;
   constexpr int kRounds = 2;
   for (int round = 0; round < kRounds && options.relax_sweeps > 0; ++round) {
@@ -143,8 +145,13 @@ std::optional<RemeshResult> remesh_at(const std::shared_ptr<const SurfaceDomain>
     for (int pass = 0; pass < 3; ++pass) moved += open_obtuse_angles(packing, out.mesh);
     moved += open_sharp_angles(packing, out.mesh, kSharpAngle);
     if (moved == 0) break;
-    if (round + 1 == kRounds)
-      final_check = std::async(std::launch::async, [&packing] { return packing_defect(packing); });
+    if (round + 1 == kRounds && detail::thread_count(options.threads) > 1) {
+      try {
+        final_check =
+            std::async(std::launch::async, [&packing] { return packing_defect(packing); });
+      } catch (const std::system_error&) {  // no thread to be had: the check runs after
+      }
+    }
     out.mesh = restricted_delaunay(packing, Coverage::maximal, options.threads, &reuse);
   }
   const std::string defect = final_check.valid() ? final_check.get() : packing_defect(packing);
