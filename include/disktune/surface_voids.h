@@ -47,8 +47,11 @@ struct HoldingBall {
 /// void_points_near's answer checked point by point, without listing them. Triangles and
 /// circles well inside the ball are passed over, and it stops at the first void point
 /// outside it, so a disk's small move is checked at a fraction of the cost.
-bool void_points_near_within(const SurfacePacking& packing, Vec3 q, double R, const std::vector<DiskId>& ignore,
-                             const HoldingBall& ball);
+/// `outside`, where given, gets the void point found outside the ball when the answer is
+/// false.
+bool void_points_near_within(const SurfacePacking& packing, Vec3 q, double R,
+                             const std::vector<DiskId>& ignore, const HoldingBall& ball,
+                             SurfaceVoidPoint* outside = nullptr);
 
 /// True when no triangle has a void point: the surface is covered (up to the tolerance).
 bool is_maximal(const SurfacePacking& packing);

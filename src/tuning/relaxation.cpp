@@ -60,6 +60,15 @@ double move_toward(P& packing, DiskId p, typename detail::Space<P>::Location to,
   };
   auto step = to - c;
   double part = 1;
+  // A void point a halving's scan found outside its ball, for the next (a surface's).
+  std::optional<SurfaceVoidPoint> outside;
+  const auto covers = [&](const typename S::Point& x) {
+    if constexpr (std::is_same_v<P, SurfacePacking>) {
+      return S::covers_lifted_voids(packing, c, S::void_reach(r), p, x, near_p, &outside);
+    } else {
+      return S::covers_lifted_voids(packing, c, S::void_reach(r), p, x, near_p);
+    }
+  };
   for (int halvings = 0; halvings < 3; ++halvings, step = step * 0.5, part *= 0.5) {
     typename S::Point x;
     if (!S::project(packing, p, c + step, x) || meets_another(x)) continue;
@@ -67,7 +76,7 @@ double move_toward(P& packing, DiskId p, typename detail::Space<P>::Location to,
       packing.move(p, x);
       return part;
     }
-    if (!S::covers_lifted_voids(packing, c, S::void_reach(r), p, x, near_p)) continue;
+    if (!covers(x)) continue;
     detail::BasicUndoLog<P> log(packing);
     log.move(p, x);
     // With one radius covers_all is exact; with a sizing p's radius changed on the way.

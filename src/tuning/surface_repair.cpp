@@ -46,14 +46,25 @@ bool covers_all(const SurfacePacking& packing, const SurfacePoint& c, const std:
 }
 
 bool covers_lifted_voids(const SurfacePacking& packing, Vec3 c, double R, DiskId p,
-                         const SurfacePoint& x, const std::vector<std::uint32_t>* near_p) {
+                         const SurfacePoint& x, const std::vector<std::uint32_t>* near_p,
+                         std::optional<SurfaceVoidPoint>* outside) {
   // Where p's cell lies in its ball at x, it still covers all that only it covered
   // (surface_cell.h), and no void points are needed: with one radius (with a sizing p's
   // radius changes on the way) and on p's own patch, by a margin above the rounding.
   if (packing.sizing().is_constant() && packing.patches_of(x) == packing.patches(p) &&
       cell_inside(packing, p, x.p, packing.radius(p) * (1 - 1e-7), near_p))
     return true;
-  return void_points_near_within(packing, c, R, {p}, holding_ball(packing, x));
+  const HoldingBall ball = holding_ball(packing, x);
+  // covers_all's test of one point; the scan below holds a point by the same one.
+  if (outside && *outside &&
+      !(is_covered(squared_norm(ball.center - (*outside)->at.p), ball.radius) &&
+        packing.share_patch(packing.index().patch_of_triangle((*outside)->at.triangle),
+                            ball.patches)))
+    return false;
+  SurfaceVoidPoint found;
+  if (void_points_near_within(packing, c, R, {p}, ball, &found)) return true;
+  if (outside) *outside = found;
+  return false;
 }
 
 double hold_span(const SurfacePacking& packing) {

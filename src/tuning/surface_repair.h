@@ -3,6 +3,7 @@
 // with the planar ones of void_repair.h): void points in place of planar corners.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "disktune/random.h"
@@ -40,8 +41,14 @@ HoldingBall holding_ball(const SurfacePacking& packing, const SurfacePoint& c);
 /// The first can say yes where the second, which asks x to cover every void near c, would
 /// not: where the packing already had a void there that p did not cover.
 /// `near_p`, where given, holds every triangle within p's ball (TrianglesNearDisks).
+/// `outside`, where given, carries a void point from one call to the next for the same
+/// p, c and R while nothing moves (a move's halvings): a void point a scan found outside
+/// an earlier x's ball, which answers no at once where x's ball does not hold it either
+/// (the scan would find it again: it is a void point of lifting p wherever p goes), and
+/// which a scan that answers no sets.
 bool covers_lifted_voids(const SurfacePacking& packing, Vec3 c, double R, DiskId p,
-                         const SurfacePoint& x, const std::vector<std::uint32_t>* near_p = nullptr);
+                         const SurfacePoint& x, const std::vector<std::uint32_t>* near_p = nullptr,
+                         std::optional<SurfaceVoidPoint>* outside = nullptr);
 
 /// The widest two points one disk can hold (covers_all's balls are at most max_radius,
 /// with is_covered's tolerance): its diameter, and a hair.

@@ -234,9 +234,14 @@ void void_points_near(const SurfacePacking& packing, Vec3 q, double R, const std
   });
 }
 
-bool void_points_near_within(const SurfacePacking& packing, Vec3 q, double R, const std::vector<DiskId>& ignore,
-                             const HoldingBall& ball) {
-  return scan_region(packing, q, R, ignore, &ball, [](std::uint32_t, Vec3, DiskId, DiskId) { return false; });
+bool void_points_near_within(const SurfacePacking& packing, Vec3 q, double R,
+                             const std::vector<DiskId>& ignore, const HoldingBall& ball,
+                             SurfaceVoidPoint* outside) {
+  return scan_region(packing, q, R, ignore, &ball,
+                     [&](std::uint32_t t, Vec3 p, DiskId a, DiskId b) {
+                       if (outside) *outside = {{p, t}, a, b};
+                       return false;
+                     });
 }
 
 namespace {
