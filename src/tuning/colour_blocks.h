@@ -24,7 +24,9 @@ using ColourBlocks = std::array<std::vector<std::vector<DiskId>>, 8>;
 
 /// The disks of `order` (live ones, each once) grouped by the cube of side `block`
 /// holding their center (cubes with a corner at `origin`), each group in the order of
-/// `order`, the groups of a colour by their cube's indices.
+/// `order`, the groups of a colour largest first (ties by their cube's indices): the
+/// threads take them in that order, so the last to be taken are small and no thread
+/// waits long for another at the colour's end.
 inline ColourBlocks colour_blocks(const SurfacePacking& packing, const std::vector<DiskId>& order,
                                   double block, Vec3 origin) {
   using Cube = std::tuple<std::int64_t, std::int64_t, std::int64_t>;
@@ -63,8 +65,10 @@ inline ColourBlocks colour_blocks(const SurfacePacking& packing, const std::vect
   for (const DiskId p : order) groups[group[p]].push_back(p);
   std::vector<std::uint32_t> by_cube(groups.size());
   for (std::uint32_t g = 0; g < by_cube.size(); ++g) by_cube[g] = g;
-  std::sort(by_cube.begin(), by_cube.end(),
-            [&](std::uint32_t a, std::uint32_t b) { return cubes[a] < cubes[b]; });
+  std::sort(by_cube.begin(), by_cube.end(), [&](std::uint32_t a, std::uint32_t b) {
+    return groups[a].size() != groups[b].size() ? groups[a].size() > groups[b].size()
+                                                : cubes[a] < cubes[b];
+  });
   ColourBlocks out;
   for (const std::uint32_t g : by_cube) {
     const auto [i, j, k] = cubes[g];
