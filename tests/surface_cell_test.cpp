@@ -2,12 +2,15 @@
 // cell_inside (src/voids/surface_cell.h), the quick test of a relaxation move: where it
 // says a disk's cell lies in the ball at x, every probe of the surface that only that disk
 // covers, and every probe nearer to it than to any other disk counting there, must lie
-// in that ball. Probes are a barycentric grid and random points on every triangle near
-// the disk, the patches are the test's own (surface_checks.h), distances plain geometry.
+// in that ball; and a DiskCell asked of three places in turn answers as cell_inside. Probes are a
+// barycentric grid and random points on every triangle near the disk, the patches are the test's
+// own (surface_checks.h), distances plain geometry.
 #include "../src/voids/surface_cell.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -135,34 +138,46 @@ TEST(SurfaceCell, AMovedDiskInsideWhichItsCellLiesStillCoversWhatOnlyItCovered) 
       for (int trial = 0; trial < 500; ++trial) {
         const std::size_t i = static_cast<std::size_t>(u(gen) * static_cast<double>(ids.size()));
         const Vec3 c = centers[i];
-        // A move along a random direction, by up to 0.6 r, to the nearest surface point.
+        // A move along a random direction, by up to 0.6 r, and its half and quarter (a
+        // relaxation move's halvings), to the nearest surface point, asked of one
+        // DiskCell in a random order: each answer must be a fresh cell_inside's.
         const Vec3 dir{u(gen) - 0.5, u(gen) - 0.5, u(gen) - 0.5};
-        const Vec3 x = test::nearest_surface_point(p, c + dir * (0.6 * r * u(gen) / norm(dir))).p;
-        const double radius = r * (1 - 1e-7);
-        if (!detail::cell_inside(p, ids[i], x, radius)) {
-          ++outside;
-          continue;
-        }
-        ++inside;
-        std::vector<std::size_t> others;  // the disks that can cover a point within r of c
-        for (std::size_t j = 0; j < centers.size(); ++j)
-          if (j != i && squared_norm(centers[j] - c) <= 4.1 * r * r) others.push_back(j);
-        for (const Probe& y : probes_near(*surface, label, c, 1.01 * r + longest, gen)) {
-          if (!on[i].count(y.patch) || squared_norm(y.at - c) > r * r * (1 + 4e-9)) continue;
-          bool covered_by_other = false, nearer_other = false;
-          for (const std::size_t j : others) {
-            if (!on[j].count(y.patch)) continue;
-            const double dj = squared_norm(y.at - centers[j]);
-            covered_by_other = covered_by_other || dj <= r * r * (1 + 4e-9);
-            nearer_other = nearer_other || dj < squared_norm(y.at - c);
+        const Vec3 step = dir * (0.6 * r * u(gen) / norm(dir));
+        std::array<double, 3> parts{1, 0.5, 0.25};
+        std::shuffle(parts.begin(), parts.end(), gen);
+        detail::DiskCell cell;
+        cell.of(p, ids[i]);
+        for (const double part : parts) {
+          const Vec3 x = test::nearest_surface_point(p, c + step * part).p;
+          const double radius = r * (1 - 1e-7);
+          const bool said_inside = cell.inside(x, radius);
+          ASSERT_EQ(said_inside, detail::cell_inside(p, ids[i], x, radius))
+              << file << " seed " << seed << " disk " << ids[i] << ", part " << part;
+          if (!said_inside) {
+            ++outside;
+            continue;
           }
-          if (covered_by_other && nearer_other) continue;
-          ++checked;
-          ASSERT_LE(norm(y.at - x), radius * (1 + 1e-9))
-              << file << " seed " << seed << " disk " << ids[i] << ": the point (" << y.at.x << ", "
-              << y.at.y << ", " << y.at.z << ") "
-              << (covered_by_other ? "nearest to it" : "covered only by it")
-              << " is outside its ball at the new place";
+          ++inside;
+          std::vector<std::size_t> others;  // the disks that can cover a point within r of c
+          for (std::size_t j = 0; j < centers.size(); ++j)
+            if (j != i && squared_norm(centers[j] - c) <= 4.1 * r * r) others.push_back(j);
+          for (const Probe& y : probes_near(*surface, label, c, 1.01 * r + longest, gen)) {
+            if (!on[i].count(y.patch) || squared_norm(y.at - c) > r * r * (1 + 4e-9)) continue;
+            bool covered_by_other = false, nearer_other = false;
+            for (const std::size_t j : others) {
+              if (!on[j].count(y.patch)) continue;
+              const double dj = squared_norm(y.at - centers[j]);
+              covered_by_other = covered_by_other || dj <= r * r * (1 + 4e-9);
+              nearer_other = nearer_other || dj < squared_norm(y.at - c);
+            }
+            if (covered_by_other && nearer_other) continue;
+            ++checked;
+            ASSERT_LE(norm(y.at - x), radius * (1 + 1e-9))
+                << file << " seed " << seed << " disk " << ids[i] << ": the point (" << y.at.x
+                << ", " << y.at.y << ", " << y.at.z << ") "
+                << (covered_by_other ? "nearest to it" : "covered only by it")
+                << " is outside its ball at the new place";
+          }
         }
       }
       std::printf("[ cell ] %s seed %llu: %zu moves said inside (%zu probes checked), %zu not\n",

@@ -60,11 +60,16 @@ double move_toward(P& packing, DiskId p, typename detail::Space<P>::Location to,
   };
   auto step = to - c;
   double part = 1;
-  // A void point a halving's scan found outside its ball, for the next (a surface's).
-  std::optional<SurfaceVoidPoint> outside;
+  // What a halving's check learns for the next (a surface's): p's cell, a void point.
+  [[maybe_unused]] detail::LiftedDisk* lifted = nullptr;
+  if constexpr (std::is_same_v<P, SurfacePacking>) {
+    thread_local detail::LiftedDisk kept;  // its lists reused from move to move
+    kept.forget();
+    lifted = &kept;
+  }
   const auto covers = [&](const typename S::Point& x) {
     if constexpr (std::is_same_v<P, SurfacePacking>) {
-      return S::covers_lifted_voids(packing, c, S::void_reach(r), p, x, near_p, &outside);
+      return S::covers_lifted_voids(packing, c, S::void_reach(r), p, x, near_p, lifted);
     } else {
       return S::covers_lifted_voids(packing, c, S::void_reach(r), p, x, near_p);
     }

@@ -14,7 +14,7 @@
 //   voids_in(P, c, R, ignore)  the void points within R of c, `ignore` lifted
 //   void_choice(P, voids, rng) where a new disk goes: largest weighted diameter
 //   covers_all(P, x, voids)    a disk at x holds every void point
-//   covers_lifted_voids(P, c, R, p, x[, near_p[, outside]])  covers_all(P, x, voids_in(P, c, R,
+//   covers_lifted_voids(P, c, R, p, x[, near_p[, lifted]])  covers_all(P, x, voids_in(P, c, R,
 //                    {p})): disk p moved from c to x still holds its own void (on a
 //                    surface without listing the void points, much faster; near_p: the
 //                    triangles near p, where known)
@@ -218,8 +218,8 @@ struct Space<SurfacePacking> {
   static bool covers_lifted_voids(const SurfacePacking& packing, Location c, double R, DiskId p,
                                   const Point& x,
                                   const std::vector<std::uint32_t>* near_p = nullptr,
-                                  std::optional<SurfaceVoidPoint>* outside = nullptr) {
-    return detail::covers_lifted_voids(packing, c, R, p, x, near_p, outside);
+                                  detail::LiftedDisk* lifted = nullptr) {
+    return detail::covers_lifted_voids(packing, c, R, p, x, near_p, lifted);
   }
   static std::vector<Near> mobile_neighbors(const SurfacePacking& packing, Location c, double r, DiskId self,
                                             Rng& rng) {

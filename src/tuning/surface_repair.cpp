@@ -5,7 +5,6 @@
 #include <cmath>
 
 #include "../geometry/triangle_arrangement.h"
-#include "../voids/surface_cell.h"
 #include "disktune/tolerance.h"
 #include "own_voids.h"
 #include "void_repair.h"
@@ -47,23 +46,29 @@ bool covers_all(const SurfacePacking& packing, const SurfacePoint& c, const std:
 
 bool covers_lifted_voids(const SurfacePacking& packing, Vec3 c, double R, DiskId p,
                          const SurfacePoint& x, const std::vector<std::uint32_t>* near_p,
-                         std::optional<SurfaceVoidPoint>* outside) {
+                         LiftedDisk* lifted) {
   // Where p's cell lies in its ball at x, it still covers all that only it covered
   // (surface_cell.h), and no void points are needed: with one radius (with a sizing p's
   // radius changes on the way) and on p's own patch, by a margin above the rounding.
-  if (packing.sizing().is_constant() && packing.patches_of(x) == packing.patches(p) &&
-      cell_inside(packing, p, x.p, packing.radius(p) * (1 - 1e-7), near_p))
-    return true;
+  if (packing.sizing().is_constant() && packing.patches_of(x) == packing.patches(p)) {
+    const double radius = packing.radius(p) * (1 - 1e-7);
+    if (!lifted) {
+      if (cell_inside(packing, p, x.p, radius, near_p)) return true;
+    } else {
+      if (!lifted->cell.is_of(p, c)) lifted->cell.of(packing, p, near_p);
+      if (lifted->cell.inside(x.p, radius)) return true;
+    }
+  }
   const HoldingBall ball = holding_ball(packing, x);
   // covers_all's test of one point; the scan below holds a point by the same one.
-  if (outside && *outside &&
-      !(is_covered(squared_norm(ball.center - (*outside)->at.p), ball.radius) &&
-        packing.share_patch(packing.index().patch_of_triangle((*outside)->at.triangle),
+  if (lifted && lifted->outside &&
+      !(is_covered(squared_norm(ball.center - lifted->outside->at.p), ball.radius) &&
+        packing.share_patch(packing.index().patch_of_triangle(lifted->outside->at.triangle),
                             ball.patches)))
     return false;
   SurfaceVoidPoint found;
   if (void_points_near_within(packing, c, R, {p}, ball, &found)) return true;
-  if (outside) *outside = found;
+  if (lifted) lifted->outside = found;
   return false;
 }
 

@@ -6,6 +6,7 @@
 #include <optional>
 #include <vector>
 
+#include "../voids/surface_cell.h"
 #include "disktune/random.h"
 #include "disktune/surface_voids.h"
 #include "undo_log.h"
@@ -35,20 +36,32 @@ bool covers_all(const SurfacePacking& packing, const SurfacePoint& c, const std:
 /// sizing) on its patches.
 HoldingBall holding_ball(const SurfacePacking& packing, const SurfacePoint& c);
 
+/// What one check of a disk's move learns that the next check of the same move can use
+/// (its halvings: the same disk, place and reach, nothing moved in between); forget()
+/// before each new move.
+struct LiftedDisk {
+  DiskCell cell;                            // its cell, clipped as far as asked so far
+  std::optional<SurfaceVoidPoint> outside;  // a void point a scan found outside a ball
+  void forget() {
+    cell.forget();
+    outside.reset();
+  }
+};
+
 /// Whether disk p (centered at c), moved to x, still holds its own void: first whether
 /// its cell lies in its ball at x (cell_inside, surface_cell.h), else covers_all(packing,
 /// x, voids_near(packing, c, R, {p})) at a fraction of its cost (void_points_near_within).
 /// The first can say yes where the second, which asks x to cover every void near c, would
 /// not: where the packing already had a void there that p did not cover.
 /// `near_p`, where given, holds every triangle within p's ball (TrianglesNearDisks).
-/// `outside`, where given, carries a void point from one call to the next for the same
-/// p, c and R while nothing moves (a move's halvings): a void point a scan found outside
-/// an earlier x's ball, which answers no at once where x's ball does not hold it either
-/// (the scan would find it again: it is a void point of lifting p wherever p goes), and
-/// which a scan that answers no sets.
+/// `lifted`, where given, carries from one call to the next of one move p's cell as far
+/// as it was clipped (DiskCell), and a void point a scan found outside an earlier x's
+/// ball, which answers no at once where x's ball does not hold it either (the scan would
+/// find it again: it is a void point of lifting p wherever p goes), and which a scan that
+/// answers no sets.
 bool covers_lifted_voids(const SurfacePacking& packing, Vec3 c, double R, DiskId p,
                          const SurfacePoint& x, const std::vector<std::uint32_t>* near_p = nullptr,
-                         std::optional<SurfaceVoidPoint>* outside = nullptr);
+                         LiftedDisk* lifted = nullptr);
 
 /// The widest two points one disk can hold (covers_all's balls are at most max_radius,
 /// with is_covered's tolerance): its diameter, and a hair.
