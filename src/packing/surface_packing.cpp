@@ -15,43 +15,6 @@ namespace disktune {
 
 // ---- SpaceGrid ----
 
-std::int64_t SpaceGrid::cell_index(double v, double cell) {
-  // Points beyond 2^52 cells share the outermost cells (see pack: only slower): casting
-  // a larger value to int64 is undefined, which a surface CSV point at x = 1e300 reached
-  // (found by fuzzing, #17). Still monotone, so a box's cells hold all its items.
-  constexpr double kFar = 4503599627370496.0;  // 2^52
-  const double c = std::floor(v / cell);
-  return static_cast<std::int64_t>(c >= -kFar ? std::min(c, kFar) : -kFar);  // NaN: -kFar
-}
-
-std::int64_t SpaceGrid::coord(double v) const { return cell_index(v, cell_); }
-
-std::uint64_t SpaceGrid::pack(std::int64_t i, std::int64_t j, std::int64_t k) {
-  // 21 bits per axis around the origin: two million cells each way is plenty, and
-  // coordinates past it only share cells (slower, never wrong).
-  const auto b = [](std::int64_t v) { return static_cast<std::uint64_t>(v + (1 << 20)) & 0x1fffff; };
-  return b(i) | b(j) << 21 | b(k) << 42;
-}
-
-std::uint64_t SpaceGrid::key(Vec3 p) const { return pack(coord(p.x), coord(p.y), coord(p.z)); }
-
-std::size_t SpaceGrid::slot_of(std::uint64_t key) const {
-  // A 64-bit mix (splitmix64's finaliser): neighbouring cells land far apart.
-  std::uint64_t h = key;
-  h = (h ^ (h >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  h = (h ^ (h >> 27)) * 0x94d049bb133111ebULL;
-  h ^= h >> 31;
-  const std::size_t mask = table_.size() - 1;
-  std::size_t at = static_cast<std::size_t>(h) & mask;
-  while (table_[at].key != key && table_[at].key != kEmpty) at = (at + 1) & mask;
-  return at;
-}
-
-const std::vector<SpaceGrid::Item>* SpaceGrid::items_of(std::uint64_t key) const {
-  const Cell& cell = table_[slot_of(key)];
-  return cell.key == key ? &cell.items : nullptr;
-}
-
 SpaceGrid::Cell& SpaceGrid::cell_at(std::uint64_t key) {
   // A cell that exists is returned without touching the table (add_cells relies on it).
   if (used_ > 0) {
