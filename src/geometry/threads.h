@@ -9,6 +9,7 @@
 #include <atomic>
 #include <cstddef>
 #include <exception>
+#include <functional>
 #include <mutex>
 #include <thread>
 #include <vector>
@@ -23,6 +24,14 @@ inline unsigned thread_count(unsigned threads) {
   if (threads == 0) threads = default_threads();
   return threads > 0 ? threads : std::max(1u, std::thread::hardware_concurrency());
 }
+
+/// job(t) for t = 0 on the caller's thread and t = 1, ..., n - 1 on other threads at
+/// once, returning when every call has: on threads kept waiting from one call to the
+/// next (thread_team.cpp), or where those are taken (a call on another thread, or from
+/// within a job), on threads made for it. Where no thread can be had, fewer t run: a
+/// job must give the same result for any number of them from 1 up. A job must not
+/// throw (parallel_for's catches and hands the exception on).
+void run_together(unsigned n, const std::function<void(unsigned)>& job);
 
 /// work(item, thread) for every item in [0, count), on up to `threads` threads (the
 /// caller's among them; `thread` in [0, threads) names the one running it, for scratch
@@ -47,16 +56,7 @@ void parallel_for(std::size_t count, unsigned threads, Work&& work) {
       next = count;
     }
   };
-  std::vector<std::thread> pool;
-  for (unsigned t = 1; t < n; ++t) {
-    try {
-      pool.emplace_back(run, t);
-    } catch (...) {  // no thread to be had (std::system_error, std::bad_alloc)
-      break;         // fewer threads: the same result, later
-    }
-  }
-  run(0);
-  for (std::thread& t : pool) t.join();
+  run_together(n, [&run](unsigned thread) { run(thread); });
   if (failure) std::rethrow_exception(failure);
 }
 
