@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <tuple>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "../geometry/threads.h"
@@ -19,8 +20,13 @@
 
 namespace disktune::detail {
 
-/// One list of disks per cube, per colour.
-using ColourBlocks = std::array<std::vector<std::vector<DiskId>>, 8>;
+/// The disks grouped by cube: group k of colour c is disks[groups[c][k].first,
+/// groups[c][k].second). Two allocations a sweep, where a list per cube made hundreds
+/// (a twentieth of relaxation's time on one core, on mesh_with_border at 10^4 disks).
+struct ColourBlocks {
+  std::vector<DiskId> disks;
+  std::array<std::vector<std::pair<std::uint32_t, std::uint32_t>>, 8> groups;
+};
 
 /// The disks of `order` (live ones, each once) grouped by the cube of side `block`
 /// holding their center (cubes with a corner at `origin`), each group in the order of
@@ -39,14 +45,15 @@ inline ColourBlocks colour_blocks(const SurfacePacking& packing, const std::vect
     }
   };
   // The groups numbered as their cubes first appear (a hash table: a sorted map's lookups
-  // were 8 % of relaxation's time on two cores), then put in the order of their cubes.
-  // Each disk's group is found in the order of ids, where a run of disks shares a cube
-  // (order_by_place numbers them along a curve through space) and only a new cube is
-  // looked up: the lookups for every disk in a random order were 6-10 % of relaxation's
-  // time on two cores (remesh of the elephant at 10^4 vertices).
+  // were 8 % of relaxation's time on two cores). Each disk's group is found in the order
+  // of ids, where a run of disks shares a cube (order_by_place numbers them along a
+  // curve through space) and only a new cube is looked up: the lookups for every disk in
+  // a random order were 6-10 % of relaxation's time on two cores (remesh of the elephant
+  // at 10^4 vertices).
   std::unordered_map<Cube, std::uint32_t, CubeHash> group_of;
   group_of.reserve(order.size() / 4 + 16);
   std::vector<Cube> cubes;
+  std::vector<std::uint32_t> size;
   std::vector<std::uint32_t> group(packing.id_bound());
   const auto index = [&](double v) { return SpaceGrid::cell_index(v, block); };
   std::uint32_t last = 0;
@@ -56,31 +63,42 @@ inline ColourBlocks colour_blocks(const SurfacePacking& packing, const std::vect
     const Cube cube{index(c.x), index(c.y), index(c.z)};
     if (cubes.empty() || cube != cubes[last]) {
       const auto [at, fresh] = group_of.try_emplace(cube, static_cast<std::uint32_t>(cubes.size()));
-      if (fresh) cubes.push_back(cube);
+      if (fresh) cubes.push_back(cube), size.push_back(0);
       last = at->second;
     }
     group[p] = last;
+    ++size[last];
   }
-  std::vector<std::vector<DiskId>> groups(cubes.size());
-  for (const DiskId p : order) groups[group[p]].push_back(p);
-  std::vector<std::uint32_t> by_cube(groups.size());
-  for (std::uint32_t g = 0; g < by_cube.size(); ++g) by_cube[g] = g;
-  std::sort(by_cube.begin(), by_cube.end(), [&](std::uint32_t a, std::uint32_t b) {
-    return groups[a].size() != groups[b].size() ? groups[a].size() > groups[b].size()
-                                                : cubes[a] < cubes[b];
+  std::vector<std::uint32_t> by_size(cubes.size());
+  for (std::uint32_t g = 0; g < by_size.size(); ++g) by_size[g] = g;
+  std::sort(by_size.begin(), by_size.end(), [&](std::uint32_t a, std::uint32_t b) {
+    return size[a] != size[b] ? size[a] > size[b] : cubes[a] < cubes[b];
   });
+  // Each group's place in `disks`, colour by colour, then the disks put there in order.
   ColourBlocks out;
-  for (const std::uint32_t g : by_cube) {
-    const auto [i, j, k] = cubes[g];
-    out[(i & 1) | (j & 1) << 1 | (k & 1) << 2].push_back(std::move(groups[g]));
-  }
+  out.disks.resize(order.size());
+  std::vector<std::uint32_t> next(cubes.size());
+  std::uint32_t begin = 0;
+  for (int colour = 0; colour < 8; ++colour)
+    for (const std::uint32_t g : by_size) {
+      const auto [i, j, k] = cubes[g];
+      if (((i & 1) | (j & 1) << 1 | (k & 1) << 2) != colour) continue;
+      out.groups[colour].emplace_back(begin, begin + size[g]);
+      next[g] = begin;
+      begin += size[g];
+    }
+  for (const DiskId p : order) out.disks[next[group[p]]++] = p;
   return out;
 }
 
-/// work(group) for every group, on up to `threads` threads (parallel_for).
+/// work(first, last) for every group of colour `colour` (its disks [first, last)), on up
+/// to `threads` threads (parallel_for).
 template <class Work>
-void for_each_group(const std::vector<std::vector<DiskId>>& groups, unsigned threads, Work&& work) {
-  parallel_for(groups.size(), threads, [&](std::size_t g, unsigned) { work(groups[g]); });
+void for_each_group(const ColourBlocks& blocks, int colour, unsigned threads, Work&& work) {
+  const auto& groups = blocks.groups[colour];
+  parallel_for(groups.size(), threads, [&](std::size_t g, unsigned) {
+    work(blocks.disks.data() + groups[g].first, blocks.disks.data() + groups[g].second);
+  });
 }
 
 }  // namespace disktune::detail

@@ -245,22 +245,22 @@ std::size_t sweep(SurfacePacking& packing, double spacing, Rng& rng, Steps<Surfa
     std::swap(colours[i - 1], colours[uniform_index(rng, i)]);
   std::atomic<std::size_t> moved{0};
   for (const int colour : colours) {
-    const auto& groups = blocks[colour];
     if (threads > 1) {
       const double slack = 0.5 * r;
-      for (const auto& group : groups)
-        for (const DiskId p : group) {
+      for (const auto& [first, end] : blocks.groups[colour])
+        for (std::uint32_t k = first; k < end; ++k) {
+          const DiskId p = blocks.disks[k];
           const Vec3 c = packing.center(p);
           if (squared_norm(c - kept.cells_made_at[p]) <= slack * slack) continue;
           packing.add_grid_cells(c, write + slack);
           kept.cells_made_at[p] = c;
         }
     }
-    detail::for_each_group(groups, threads, [&](const std::vector<DiskId>& group) {
+    detail::for_each_group(blocks, colour, threads, [&](const DiskId* first, const DiskId* end) {
       std::size_t here = 0;
-      for (const DiskId p : group)
-        if (!only || (*only)[p])
-          here += relax_disk(packing, p, spacing, last, kept.near, springs, check_all);
+      for (const DiskId* p = first; p != end; ++p)
+        if (!only || (*only)[*p])
+          here += relax_disk(packing, *p, spacing, last, kept.near, springs, check_all);
       moved += here;
     });
   }
