@@ -27,15 +27,23 @@ namespace {
 // cores. Awake it yields the core to any thread that has work (with more threads than
 // cores a thread that spun without yielding made a loop of 9,000 small calls 9x slower
 // than making threads for each; yielding, 14x faster).
-constexpr std::chrono::microseconds kAwake{500};
+// Threads past one per core sleep at once: awake, even yielding, they kept the ones with
+// work from the cores (that loop, eight threads on two cores, with two other processes
+// busy: 10.5 s awake).
+constexpr std::chrono::microseconds kAwake{500}, kAsleep{0};
 
 class Team {
  public:
   // job(t) for t in [0, n) as run_together says, or false (nothing run) where the team
   // is taken, or this is a child process whose team's threads were not copied by fork.
   bool try_run(unsigned n, const std::function<void(unsigned)>& job) {
-    std::unique_lock<std::mutex> taken(busy_, std::try_to_lock);
-    if (!taken.owns_lock() || getpid() != pid_) return false;
+    // A flag, not a mutex: a job may call again on the same thread, where try_lock on a
+    // mutex the thread holds is undefined.
+    if (getpid() != pid_ || busy_.exchange(true, std::memory_order_acquire)) return false;
+    struct Release {
+      std::atomic<bool>& busy;
+      ~Release() { busy.store(false, std::memory_order_release); }
+    } release{busy_};
     const std::uint64_t last = call_.load(std::memory_order_relaxed);
     while (members_.size() + 1 < std::min(n, kMost)) {
       try {
@@ -55,7 +63,7 @@ class Team {
     wake_.notify_all();
     job(0);
     // The others' parts: awake a little while, then asleep until the last one is done.
-    const auto until = std::chrono::steady_clock::now() + kAwake;
+    const auto until = std::chrono::steady_clock::now() + (n <= cores_ ? kAwake : kAsleep);
     while (left_.load(std::memory_order_acquire) > 0 && std::chrono::steady_clock::now() < until)
       std::this_thread::yield();
     if (left_.load(std::memory_order_acquire) > 0) {
@@ -72,7 +80,7 @@ class Team {
   // waiting for the next call in between.
   void serve(unsigned t, std::uint64_t seen) {
     for (;;) {
-      const auto until = std::chrono::steady_clock::now() + kAwake;
+      const auto until = std::chrono::steady_clock::now() + (t < cores_ ? kAwake : kAsleep);
       while (call_.load(std::memory_order_acquire) == seen &&
              std::chrono::steady_clock::now() < until)
         std::this_thread::yield();
@@ -92,7 +100,8 @@ class Team {
     }
   }
 
-  std::mutex busy_;  // held by the call the team works on
+  std::atomic<bool> busy_{false};  // set by the call the team works on
+  const unsigned cores_ = std::max(1u, std::thread::hardware_concurrency());
   const pid_t pid_ = getpid();
   std::vector<std::thread> members_;  // team thread t is members_[t - 1]
   // Set by the caller before it counts the call, read by the helpers after they see it.
