@@ -60,7 +60,8 @@ void check_triangles(const std::vector<Vec3>& points, const std::vector<Triangle
 void check_edges(const std::vector<Vec3>& points, const std::vector<HalfEdge>& half) {
   for_each_edge(half, [&](std::size_t i, std::size_t j) {
     const HalfEdge& e = half[i];
-    // Written only for the message (for every edge it was 7 % of reading a surface).
+    // Written only for a message: for every edge it took most of reading a surface
+    // (fandisk 27 ms, 7.8 ms without).
     const auto edge = [&] {
       return "the edge between " + vertex_text(points, e.lo) + " and " + vertex_text(points, e.hi);
     };

@@ -41,8 +41,8 @@ std::optional<Clipped> clip(Vec3* corner, std::size_t n, Vec3 c, Vec3 u, double 
   std::array<double, DiskCell::kCorners> f;  // the corners' heights over the plane
   bool cut = false;
   for (std::size_t i = 0; i < n; ++i) cut = (f[i] = dot(corner[i] - c, u) - k) > 0 || cut;
-  // With no corner beyond the plane the polygon stays as it is (but that one that is
-  // full can take no cut).
+  // With no corner beyond the plane the polygon stays as it is; one of `most` corners
+  // fails all the same, as every clip of it did when each clip copied the polygon.
   if (!cut) return n + 1 > most ? std::optional<Clipped>({most + 1, 0, 0}) : std::nullopt;
   Clipped kept{0, 0, 0};
   const auto keep = [&](Vec3 y) {
