@@ -32,12 +32,13 @@ std::size_t attractor_eject(BasicUndoLog<P>& log, P& packing, DiskId p, Rng& rng
     const Near& toward = pulls[pulls[i].toward].item;
     S::pull_toward(log, packing, pulls[i].item, toward.image, toward.id == p ? p : kNoDisk);
   }
+  // The pulls kept the packing maximal, so what lifting p leaves lies in p's disk and
+  // its void points bound it. None: the neighbours now cover everything p did (the scan
+  // just made is the one its removal would be checked by).
   const auto voids = S::voids_in(packing, pc, S::void_reach(r), {p});
   if (voids.empty()) {
-    log.remove(p);  // the neighbours may now cover everything p did
-    if (S::void_free_near(packing, pc, r)) return 1;
-    log.revert_to(mark);
-    return 0;
+    log.remove(p);
+    return 1;
   }
   typename S::Point z;
   if (!S::sole_cover_point(packing, voids, p, pc, r, z)) {
@@ -46,9 +47,9 @@ std::size_t attractor_eject(BasicUndoLog<P>& log, P& packing, DiskId p, Rng& rng
   }
   const std::size_t moved = log.mark();
   log.move(p, z);
-  // Around z too (placed_void_free); the pulls checked their own.
-  if (!S::void_free_near(packing, pc, r) || !placed_void_free(log, packing, moved))
-    log.revert_to(mark);
+  // At z p covers all of its void points (covers_all), so only a crossing on its new
+  // rim can be open: the check around z (placed_void_free); the pulls checked their own.
+  if (!placed_void_free(log, packing, moved)) log.revert_to(mark);
   return 0;
 }
 

@@ -100,10 +100,13 @@ std::vector<Vec3> distinct_points(const std::vector<SurfaceVoidPoint>& voids, do
 
 // covering_positions, or with `clear_of_disks` false the positions that cover the void
 // points whatever disk they meet (the other disks' spheres left out of the arrangement).
+// With `nearer_than2` (and `toward`), only the first of those nearest to *toward, where
+// it is nearer than that squared distance: a vertex no nearer than the best so far is
+// not tested (most of them).
 std::vector<SurfacePoint> positions(const SurfacePacking& packing,
                                     const std::vector<SurfaceVoidPoint>& voids, Vec3 near, double R,
                                     DiskId self, DiskId passable, const Vec3* toward,
-                                    bool clear_of_disks) {
+                                    bool clear_of_disks, const double* nearer_than2 = nullptr) {
   std::vector<SurfacePoint> out;
   if (voids.empty()) return out;
   // Balls of the smallest radius near the voids; with a sizing the true radius differs
@@ -142,17 +145,27 @@ std::vector<SurfacePoint> positions(const SurfacePacking& packing,
       conflict_balls.push_back(ball);
     });
   std::vector<Ball> balls;
+  const bool nearest = nearer_than2 && toward;
+  double best2 = nearest ? *nearer_than2 : 0;
   for (const double shrink : {1.0, 0.95, 0.85, 0.7}) {
     if (shrink < 1 && packing.sizing().is_constant()) break;
     balls = conflict_balls;
     for (const Vec3& v : points) balls.push_back({v, r * shrink, kNoDisk});
     for (const std::uint32_t t : kept) {
-      for_each_arrangement_vertex(packing.index().plane(t), balls, kRelTol * r, [&](Vec3 p, DiskId, DiskId) {
-        const SurfacePoint x{p, t};
-        if (squared_norm(p - near) <= R * R && covers_all(packing, x, voids) &&
-            !(clear_of_disks && packing.conflicts(x, self, passable)))
-          out.push_back(x);
-      }, toward);
+      for_each_arrangement_vertex(
+          packing.index().plane(t), balls, kRelTol * r,
+          [&](Vec3 p, DiskId, DiskId) {
+            if (squared_norm(p - near) > R * R) return;
+            const double d2 = nearest ? squared_norm(p - *toward) : 0;
+            if (nearest && !(d2 < best2)) return;
+            const SurfacePoint x{p, t};
+            if (!covers_all(packing, x, voids) ||
+                (clear_of_disks && packing.conflicts(x, self, passable)))
+              return;
+            if (nearest) best2 = d2, out.clear();
+            out.push_back(x);
+          },
+          toward);
     }
     if (!out.empty()) break;
   }
@@ -196,38 +209,30 @@ void pull_toward(SurfaceUndoLog& log, SurfacePacking& packing, DiskId q, Vec3 to
   const double rq = packing.radius(q);
   const auto voids = own_voids(packing, q);
   if (voids.empty()) return;
-  const auto nearest = [&](const std::vector<SurfacePoint>& spots) {
-    const SurfacePoint* best = nullptr;
-    double best_d2 = squared_norm(cq - to) * (1 - 1e-9);
-    for (const SurfacePoint& s : spots) {
-      const double d2 = squared_norm(s.p - to);
-      if (d2 < best_d2) best = &s, best_d2 = d2;
-    }
-    return best;
-  };
+  // The first of the positions nearest `to`, where one is nearer than q is now.
+  const double nearer_than2 = squared_norm(cq - to) * (1 - 1e-9);
   // First the positions that cover the void, the other disks left out: on a triangle
   // they make a convex set holding every position, and the candidates hold its point
   // nearest `to`. So when none is nearer than q is now, no position is; and when the
   // nearest meets no disk, it is the answer. The other disks' spheres (many more
   // circles) only where it meets one. (With a sizing the covering balls shrink until
   // some position is found, which the disks change: the full search at once.)
-  std::vector<SurfacePoint> spots;
-  const SurfacePoint* best = nullptr;
+  std::vector<SurfacePoint> best;
   if (packing.sizing().is_constant()) {
-    spots = positions(packing, voids, cq, 2 * rq, q, passable, &to, false);
-    best = nearest(spots);
-    if (!best) return;
+    best = positions(packing, voids, cq, 2 * rq, q, passable, &to, false, &nearer_than2);
+    if (best.empty()) return;
   }
-  if (!best || packing.conflicts(*best, q, passable)) {
-    spots = covering_positions(packing, voids, cq, 2 * rq, q, passable, &to);
-    best = nearest(spots);
-  }
-  if (!best) return;
+  if (best.empty() || packing.conflicts(best[0], q, passable))
+    best = positions(packing, voids, cq, 2 * rq, q, passable, &to, true, &nearer_than2);
+  if (best.empty()) return;
   const std::size_t before = log.mark();
-  const Vec3 to_p = best->p;
-  log.move(q, *best);
-  // Around the new center too (placed_void_free, space.h).
-  if (!void_free_near(packing, cq, rq) || !void_free_near(packing, to_p, rq)) log.revert_to(before);
+  const Vec3 to_p = best[0].p;
+  log.move(q, best[0]);
+  // The packing is maximal before the pull, so what lifting q leaves lies in q's old
+  // ball, inside the convex hull of its void points on each triangle; the new place
+  // covers them all (positions keeps only such), so only a crossing on q's new rim can
+  // be open (placed_void_free, space.h): the exact check around the new center alone.
+  if (!void_free_near(packing, to_p, rq)) log.revert_to(before);
 }
 
 std::vector<DiskId> mobile_neighbors(const SurfacePacking& packing, Vec3 point, double r, DiskId self, Rng& rng) {
