@@ -25,7 +25,8 @@ class OwnVoidCache {
  private:
   struct Entry {
     Vec3 center;
-    std::uint64_t changes = 0;  // SurfacePacking::changes_near when it was found
+    std::uint64_t changes = 0;  // SurfacePacking::changes_near when it was last asked
+    std::uint64_t read = 0;     // the disks the scan read (read_disks), when it was found
     bool kept = false;
     std::vector<SurfaceVoidPoint> voids;
   };
@@ -36,8 +37,10 @@ class OwnVoidCache {
 };
 
 /// The void points within void_reach of disk p's center with p lifted: voids_near's
-/// answer, from the cache when one serves this packing and no disk near p (within
-/// the reach of a disk that could bound or cover them) has changed since it was found.
+/// answer, from the cache when one serves this packing, p has not moved, and the disks
+/// the scan reads are where they were when it was found: nothing changed in the grid
+/// cells around p, or the disks centered within the scan's reach are the same ones at
+/// the same places, met in the same order (a 64-bit hash of their ids and places).
 std::vector<SurfaceVoidPoint> own_voids(const SurfacePacking& packing, DiskId p);
 
 }  // namespace disktune::detail
