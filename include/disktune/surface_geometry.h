@@ -26,6 +26,8 @@ class TrianglePlane {
   Vec3 normal() const { return normal_; }
   /// The corners in the frame: a is (0, 0), b on the x axis.
   Vec2 corner(int k) const { return corner_[k]; }
+  /// The length of the edge from corner k to corner k + 1 (mod 3).
+  double edge_length(int k) const { return edge_length_[k]; }
   /// Coordinates in the frame of the orthogonal projection of p.
   Vec2 to_plane(Vec3 p) const { return {dot(p - origin_, ex_), dot(p - origin_, ey_)}; }
   /// The point of the plane with these frame coordinates.
@@ -33,7 +35,14 @@ class TrianglePlane {
   /// Signed distance of p from the plane (positive on the normal's side).
   double height(Vec3 p) const { return dot(p - origin_, normal_); }
   /// True when q lies in the closed triangle, up to `tol` (a length) outside its edges.
-  bool contains(Vec2 q, double tol) const;
+  bool contains(Vec2 q, double tol) const {
+    // Inside the three edge lines (counterclockwise), each pushed out by tol.
+    for (int k = 0; k < 3; ++k) {
+      const Vec2 p = corner_[k], e = corner_[(k + 1) % 3] - p;
+      if (cross(e, q - p) < -tol * edge_length_[k]) return false;
+    }
+    return true;
+  }
   /// The circle in which the sphere S(center, r) cuts the plane (in the frame), or none
   /// when the sphere misses it. A sphere just touching the plane gives radius 0.
   std::optional<Circle> section(Vec3 center, double r) const;
@@ -41,6 +50,7 @@ class TrianglePlane {
  private:
   Vec3 origin_, ex_, ey_, normal_;
   Vec2 corner_[3];
+  double edge_length_[3];  // of the edge from corner k to the next (contains, often asked)
 };
 
 /// The points of the triangle where the boundaries of spheres S(c1, r1) and S(c2, r2)

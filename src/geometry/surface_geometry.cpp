@@ -24,15 +24,7 @@ TrianglePlane::TrianglePlane(Vec3 a, Vec3 b, Vec3 c) : origin_(a) {
   corner_[0] = {0, 0};
   corner_[1] = {len, 0};
   corner_[2] = to_plane(c);
-}
-
-bool TrianglePlane::contains(Vec2 q, double tol) const {
-  // Inside the three edge lines (counterclockwise), each pushed out by tol.
-  for (int k = 0; k < 3; ++k) {
-    const Vec2 p = corner_[k], e = corner_[(k + 1) % 3] - p;
-    if (cross(e, q - p) < -tol * norm(e)) return false;
-  }
-  return true;
+  for (int k = 0; k < 3; ++k) edge_length_[k] = norm(corner_[(k + 1) % 3] - corner_[k]);
 }
 
 std::optional<Circle> TrianglePlane::section(Vec3 center, double r) const {

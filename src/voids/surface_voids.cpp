@@ -39,11 +39,19 @@ void disks_near(const SurfacePacking& packing, Vec3 q, double R, const std::vect
 
 // Whether the arrangement vertex p of a triangle of `patch` (on the circles of disks a
 // and b, where not kNoDisk, and on the triangle's edges it lies on) is covered by the
-// disks of `near` that count on the patch: strictly inside one, or surrounded by those whose circles pass through it
-// (corner_cover.h). A crossing that merely lies on a third circle can still open a
-// wedge of void, and disks placed at void points make such crossings by construction.
-bool vertex_covered(const SurfacePacking& packing, const TrianglePlane& plane, PatchSet patch, Vec3 p, DiskId a,
-                    DiskId b, const std::vector<DiskId>& near, double tol) {
+// disks of `near` that count on the patch: strictly inside one, or surrounded by those whose
+// circles pass through it (corner_cover.h). A crossing that merely lies on a third circle can still
+// open a wedge of void, and disks placed at void points make such crossings by construction.
+// `inside` is the disk of `near` that last held a vertex strictly, tried first (the
+// next vertex is most often near the last; the answer is the same in any order).
+bool vertex_covered(const SurfacePacking& packing, const TrianglePlane& plane, PatchSet patch,
+                    Vec3 p, DiskId a, DiskId b, const std::vector<DiskId>& near, double tol,
+                    DiskId& inside) {
+  const auto holds = [&](DiskId j) {
+    return j != a && j != b && packing.share_patch(packing.patches(j), patch) &&
+           is_conflict(squared_norm(packing.center(j) - p), packing.radius(j));
+  };
+  if (inside != kNoDisk && holds(inside)) return true;
   const Vec2 x = plane.to_plane(p);
   detail::CornerCover cover(x);
   // Toward the center of the circle a ball cuts in the plane (none for a ball that only
@@ -57,12 +65,12 @@ bool vertex_covered(const SurfacePacking& packing, const TrianglePlane& plane, P
       if (const auto d = toward_circle(j)) cover.through(*d);
   for (int k = 0; k < 3; ++k) {  // edges through x: beyond them is another triangle's
     const Vec2 c = plane.corner(k), e = plane.corner((k + 1) % 3) - c;
-    if (cross(e, x - c) <= tol * norm(e)) cover.through(Vec2{e.y, -e.x});
+    if (cross(e, x - c) <= tol * plane.edge_length(k)) cover.through(Vec2{e.y, -e.x});
   }
   for (const DiskId j : near) {
     if (j == a || j == b || !packing.share_patch(packing.patches(j), patch)) continue;
     const double d2 = squared_norm(packing.center(j) - p), r = packing.radius(j);
-    if (is_conflict(d2, r)) return true;  // strictly inside
+    if (is_conflict(d2, r)) return inside = j, true;  // strictly inside
     if (is_covered(d2, r))
       if (const auto d = toward_circle(j)) cover.through(*d);
   }
@@ -148,10 +156,12 @@ bool scan_triangle(const SurfacePacking& packing, std::size_t t, Vec3 q, double 
   const double R2 = std::isfinite(R) ? R * R : std::numeric_limits<double>::infinity();
   const double tol = kRelTol * packing.max_radius();
   bool going = true;
+  DiskId inside = kNoDisk;
   for_each_arrangement_vertex(plane, balls, tol, [&](Vec3 p, DiskId a, DiskId b) {
     if (!going || squared_norm(p - q) > R2) return;
     if (held && is_covered(squared_norm(p - held->center), held->radius)) return;
-    if (!vertex_covered(packing, plane, patch, p, a, b, near, tol)) going = on_void(p, a, b);
+    if (!vertex_covered(packing, plane, patch, p, a, b, near, tol, inside))
+      going = on_void(p, a, b);
   });
   return going;
 }
@@ -184,9 +194,10 @@ void void_points_of(const SurfacePacking& packing, std::size_t t, const std::arr
         balls.push_back({packing.center(j), packing.radius(j), j});
     }
     const double R2 = R * R;
+    DiskId inside = kNoDisk;
     for_each_arrangement_vertex(plane, balls, tol, [&](Vec3 p, DiskId a, DiskId b) {
       if (squared_norm(p - q) > R2) return;
-      if (!vertex_covered(packing, plane, patch, p, a, b, near, tol))
+      if (!vertex_covered(packing, plane, patch, p, a, b, near, tol, inside))
         out.push_back({{p, static_cast<std::uint32_t>(t)}, a, b});
     });
   });
