@@ -240,9 +240,16 @@ struct Space<SurfacePacking> {
     return detail::covering_point(packing, voids, near, R, rng, z);
   }
   // Lifting p and q leaves at least what each leaves alone; one scan of q's own void
-  // (against two of the pair's) tells most pairs apart (wider_than_one_disk).
+  // (against two of the pair's) tells most pairs apart (wider_than_one_disk). Before
+  // it, q's center: where no other disk covers it, it lies in q's own void, so in the
+  // hull of that void's points on its triangle, and a point of p's void farther from it
+  // than one disk holds (by a margin for rounding) is farther from one of those points.
   static bool pair_too_wide(const SurfacePacking& packing, const std::vector<VoidPoint>& own_p,
                             const Near& q) {
+    const double span2 = hold_span(packing) * hold_span(packing) * (1 + 1e-9);
+    bool far = false;
+    for (const VoidPoint& v : own_p) far = far || squared_norm(v.at.p - q.image) > span2;
+    if (far && !packing.covered(packing.point(q.id), q.id)) return true;
     return detail::wider_than_one_disk(packing, own_p,
                                        voids_in(packing, q.image, void_reach(q.radius), {q.id}));
   }
