@@ -3,7 +3,8 @@
 // (docs/tuning.md, "Fewer void scans in surface ejection"): sifting's pair test from
 // q's center against the test on a fresh scan of q's own void, and an attractor pull
 // (nearest positions only, no scan of where q was) against the nearest of all covering
-// positions, the packing then checked by the independent oracle on every sixteenth.
+// positions, with one radius and with radii that vary, the packing then checked by the
+// independent oracle on every sixteenth.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -24,13 +25,18 @@ using S = detail::Space<SurfacePacking>;
 
 double diagonal(const SurfaceDomain& d) { return norm(d.bbox_max() - d.bbox_min()); }
 
-// A maximal sample of a surface of the test data, fandisk with its creases as patches.
-SurfacePacking sample_of(const std::string& file, double share, std::uint64_t seed) {
+// A maximal sample of a surface of the test data, fandisk with its creases as patches;
+// with `spec`, radii that vary (parse_surface_sizing) instead of share * diagonal.
+SurfacePacking sample_of(const std::string& file, double share, std::uint64_t seed,
+                         const char* spec = nullptr) {
   SurfaceDomain d = *test::surface_file(file);
   if (file == "fandisk.off") d.set_features(detect_features(d, {60, 60, 0}));
   const auto surface = std::make_shared<const SurfaceDomain>(std::move(d));
   Rng rng(seed);
-  return sample_mps(surface, SurfaceSizing::constant(share * diagonal(*surface)), rng);
+  return sample_mps(surface,
+                    spec ? parse_surface_sizing(spec, *surface)
+                         : SurfaceSizing::constant(share * diagonal(*surface)),
+                    rng);
 }
 
 std::vector<SurfaceVoidPoint> own_void(const SurfacePacking& packing, DiskId p) {
@@ -64,8 +70,15 @@ TEST(EjectionShortcuts, SiftingsPairTestFromTheCenterAgreesWithTheScan) {
 
 TEST(EjectionShortcuts, APullGoesToTheNearestCoveringPositionAndKeepsThePackingMaximal) {
   std::size_t moved = 0, stayed = 0;
-  for (const auto& [file, share] : {std::pair{"eight.off", 0.03}, {"fandisk.off", 0.02}}) {
-    const SurfacePacking start = sample_of(file, share, 6);
+  struct Case {
+    const char* file;
+    double share;
+    const char* spec;  // radii that vary, or none
+  };
+  for (const auto& [file, share, spec] :
+       {Case{"eight.off", 0.03, nullptr}, Case{"fandisk.off", 0.02, nullptr},
+        Case{"fandisk.off", 0, "auto:0.05"}}) {
+    const SurfacePacking start = sample_of(file, share, 6, spec);
     Rng rng(2);
     const std::vector<DiskId> ids = start.ids();
     for (std::size_t k = 0; k < ids.size(); k += 7) {

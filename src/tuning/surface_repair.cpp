@@ -101,8 +101,9 @@ std::vector<Vec3> distinct_points(const std::vector<SurfaceVoidPoint>& voids, do
 // covering_positions, or with `clear_of_disks` false the positions that cover the void
 // points whatever disk they meet (the other disks' spheres left out of the arrangement).
 // With `nearer_than2` (and `toward`), only the first of those nearest to *toward, where
-// it is nearer than that squared distance: a vertex no nearer than the best so far is
-// not tested (most of them).
+// it is nearer than that squared distance; with one radius a vertex no nearer than the
+// best so far is not tested (most of them). (With a sizing the balls shrink until some
+// position is found, near or not, and the nearest of those is taken.)
 std::vector<SurfacePoint> positions(const SurfacePacking& packing,
                                     const std::vector<SurfaceVoidPoint>& voids, Vec3 near, double R,
                                     DiskId self, DiskId passable, const Vec3* toward,
@@ -145,7 +146,7 @@ std::vector<SurfacePoint> positions(const SurfacePacking& packing,
       conflict_balls.push_back(ball);
     });
   std::vector<Ball> balls;
-  const bool nearest = nearer_than2 && toward;
+  const bool nearest = nearer_than2 && toward && packing.sizing().is_constant();
   double best2 = nearest ? *nearer_than2 : 0;
   for (const double shrink : {1.0, 0.95, 0.85, 0.7}) {
     if (shrink < 1 && packing.sizing().is_constant()) break;
@@ -168,6 +169,13 @@ std::vector<SurfacePoint> positions(const SurfacePacking& packing,
           toward);
     }
     if (!out.empty()) break;
+  }
+  if (nearer_than2 && toward && !nearest) {
+    const SurfacePoint* pick = nullptr;
+    double pick2 = *nearer_than2;
+    for (const SurfacePoint& x : out)
+      if (squared_norm(x.p - *toward) < pick2) pick = &x, pick2 = squared_norm(x.p - *toward);
+    return pick ? std::vector<SurfacePoint>{*pick} : std::vector<SurfacePoint>{};
   }
   return out;
 }
