@@ -13,6 +13,7 @@
 #include <queue>
 #include <string>
 #include <tuple>
+#include <type_traits>
 #include <vector>
 
 #include "../voids/final_check.h"
@@ -21,6 +22,7 @@
 #include "disktune/surface_tuning.h"
 #include "disktune/tuning.h"
 #include "space.h"
+#include "tile_order.h"
 
 namespace disktune::detail {
 
@@ -312,6 +314,7 @@ TuneResult run_phases(P& packing, const P& entry, double unit, std::size_t goal,
     std::vector<DiskId> order = packing.ids();
     for (std::size_t i = order.size(); i > 1; --i)
       std::swap(order[i - 1], order[uniform_index(rng, i)]);
+    if constexpr (std::is_same_v<P, Packing>) order = tiled(packing, order, rng);
     if (sparse) {
       std::vector<DiskId> sparsest = sparsest_first(packing, order);
       if (!sparsest.empty()) order = std::move(sparsest);  // else every disk is fixed: all
