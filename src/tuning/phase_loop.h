@@ -178,6 +178,7 @@ std::vector<PhasePlan<P>> plan_for(const TuneOptions& o, bool eject, bool one_ra
   // 10 %, 7.8 s, but eight.off to 0.62x then took 7.8 and 10.6 s where 3 % takes 8.4
   // and 8.6; docs/tuning.md).
   Plan quick_void_phase = void_phase, quick_sift_phase = sift_phase;
+  quick_void_phase.until = o.surface_void_until;
   quick_void_phase.min_gain = 0.02;
   quick_void_phase.judge_parts = true;
   quick_sift_phase.min_gain = 3e-2;

@@ -228,8 +228,8 @@ def test_progress_is_called_and_can_cancel():
 
     t = disktune.tune(s, area_fraction=0.7, progress=watch)
     assert seen and {"count", "area_fraction", "phase", "phase_goal"} <= set(seen[0])
-    # Void injection hands over at area fraction 0.75, past the target 0.7: its goal is
-    # the target's count, where tuning ends.
+    # Void injection hands over at area fraction 0.70, the target here: its goal is the
+    # target's count, where tuning ends.
     assert [p["phase_goal"] for p in seen if p["phase"] == "void injection"] == [len(t)] * len(seen)
     with pytest.raises(disktune.Cancelled):
         disktune.tune(s, area_fraction=0.7, progress=lambda p: False)
