@@ -104,10 +104,10 @@ TEST(PhaseTimeLeft, TuneReportsWhereEachPhaseHandsOver) {
   for (const Progress& s : seen) {
     if (s.phase == Phase::void_injection) {
       ++void_reports;
-      EXPECT_EQ(s.phase_goal, count_at(0.75));
+      EXPECT_EQ(s.phase_goal, count_at(options.void_until));  // 0.70
     } else if (s.phase == Phase::repeller_injection) {
       ++repeller_reports;
-      EXPECT_EQ(s.phase_goal, target);  // before its own 0.79
+      EXPECT_EQ(s.phase_goal, target);  // before its own repeller_until, 0.79
     }
   }
   EXPECT_GT(void_reports, 0u);
