@@ -2,6 +2,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <optional>
 #include <sstream>
 
@@ -84,27 +86,27 @@ void corners_on_circle(const Packing& packing, DiskId p, std::vector<Corner>& ou
   }
 }
 
-void corners_in_region(const Packing& packing, Vec2 center, double R,
-                       const std::vector<DiskId>& ignore, std::vector<Corner>& out) {
+namespace {
+
+// The search as it was, kept for regions holding more disks than the arrays below (a
+// call with a region several radii wide): the same corners in the same order.
+void corners_in_wide_region(const Packing& packing, Vec2 center, double R,
+                            const std::vector<DiskId>& ignore, std::vector<Corner>& out) {
   std::vector<Neighbor> near;
   near.reserve(32);
   const double rmax = packing.max_radius();
   packing.for_each_near(center, (R + rmax) * (1 + 2 * kRelTol), [&](const Neighbor& n) {
     if (!contains(ignore, n.id)) near.push_back(n);
   });
-  // Nearest first: the disks closest to the region cover most of it, so coverage tests
-  // stop early.
   std::sort(near.begin(), near.end(), [](const Neighbor& a, const Neighbor& b) { return a.d2 < b.d2; });
   const double lim = R * (1 + kRelTol);
   for (std::size_t i = 0; i < near.size(); ++i) {
     for (std::size_t j = i + 1; j < near.size(); ++j) {
-      // The cheap test first: it drops about half the pairs of a dense packing's region.
       if (too_far_apart_to_meet(squared_distance(near[i].image, near[j].image), near[i].radius + near[j].radius))
         continue;
       if (!intersections_may_lie_in(near[i].image, near[i].radius, near[j].image, near[j].radius,
-                                    center, lim)) {
+                                    center, lim))
         continue;
-      }
       const CircleIntersection x =
           intersect_circles(near[i].image, near[i].radius, near[j].image, near[j].radius);
       for (int k = 0; k < x.count; ++k) {
@@ -116,6 +118,266 @@ void corners_in_region(const Packing& packing, Vec2 center, double R,
       }
     }
   }
+}
+
+// A region of a dense packing holds 10-20 disks (R = r: 12 on average in the README's
+// job); past this, corners_in_wide_region. At most 64: sets of disks are bits of a word.
+constexpr int kNear = 48;
+
+// Two doubles side by side (GCC and Clang vector extensions: SSE2 or NEON code, else
+// scalar). Each operation is the scalar one lane by lane, so the lanes hold, bit for
+// bit, what the scalar code of intersect_circles, too_far_apart_to_meet,
+// intersections_may_lie_in and CornerCover computes. The search below goes without
+// branches where the scalar one branched on every pair and point, half of them each
+// way: those branches, mispredicted, were most of its time.
+using Lanes = double __attribute__((vector_size(16)));
+using Mask = long long __attribute__((vector_size(16)));  // lanes of all ones (true) or zeros
+
+Lanes load(const double* p) {
+  Lanes v;
+  std::memcpy(&v, p, sizeof v);
+  return v;
+}
+
+Lanes select(Mask m, Lanes a, Lanes b) {  // m ? a : b, lane by lane
+  return (Lanes)(((Mask)a & m) | ((Mask)b & ~m));
+}
+
+// Disks as arrays, with the two lanes past the last one padded (far away, radius 0:
+// they meet no circle and cover nothing).
+struct Disks {
+  int n = 0;
+  alignas(16) double x[kNear + 2], y[kNear + 2], r[kNear + 2];
+  alignas(16) double conflict2[kNear + 2],
+      cover2[kNear + 2];  // is_conflict's and is_covered's bounds, squared
+  DiskId id[kNear];
+};
+
+// The disks found, nearest the center first, as std::sort by d2 orders them. Without
+// equal d2 every sort gives the one order, here by ranks (no branches); with some (2 %
+// of the calls in the README's job) std::sort decides, on the same keys in the same
+// order as it did, so equals keep the order it gives them.
+void sort_by_distance(const Disks& found, double* d2, Disks& s) {
+  const int n = found.n;
+  d2[n] = d2[n + 1] = HUGE_VAL;  // padding: below nothing
+  int rank[kNear];
+  long long equal = 0;
+  for (int k = 0; k < n; ++k) {
+    const Lanes dk = {d2[k], d2[k]};
+    Mask below = {0, 0}, same = {0, 0};
+    for (int m = 0; m < n; m += 2) {
+      const Lanes dm = load(d2 + m);
+      below -= dm < dk;
+      same -= dm == dk;
+    }
+    rank[k] = static_cast<int>(below[0] + below[1]);
+    equal += same[0] + same[1];
+  }
+  if (equal > n) {  // each d2 equals itself; more is a tie
+    struct Key {
+      double d2;
+      int index;
+    };
+    Key key[kNear];
+    for (int k = 0; k < n; ++k) key[k] = {d2[k], k};
+    std::sort(key, key + n, [](const Key& a, const Key& b) { return a.d2 < b.d2; });
+    for (int k = 0; k < n; ++k) rank[key[k].index] = k;
+  }
+  s.n = n;
+  for (int k = 0; k < n; ++k) {
+    const int to = rank[k];
+    s.x[to] = found.x[k], s.y[to] = found.y[k], s.r[to] = found.r[k], s.id[to] = found.id[k];
+    const double lo = found.r[k] * (1.0 - kRelTol), hi = found.r[k] * (1.0 + kRelTol);
+    s.conflict2[to] = lo * lo, s.cover2[to] = hi * hi;
+  }
+  for (int k = n; k < n + 2; ++k)
+    s.x[k] = s.y[k] = HUGE_VAL, s.r[k] = s.conflict2[k] = s.cover2[k] = 0.0;
+}
+
+// The pairs (i, j), i < j, that too_far_apart_to_meet and intersections_may_lie_in
+// keep, in (i, j) order, two pairs at a time; and in meets[i] the bits of the disks
+// whose circles meet i's. With one radius a = 0.5 + 0 / (2 d2) is 0.5 exactly: no
+// division.
+template <bool kOneRadius>
+int kept_pairs(const Disks& s, Vec2 center, double lim, std::uint8_t* ki, std::uint8_t* kj,
+               std::uint64_t* meets) {
+  const Lanes cx = {center.x, center.x}, cy = {center.y, center.y}, zero = {0.0, 0.0};
+  const int n = s.n;
+  int nk = 0;
+  for (int i = 0; i <= n; ++i) meets[i] = 0;
+  for (int i = 0; i < n; ++i) {
+    const double xi = s.x[i], yi = s.y[i], ri = s.r[i];
+    std::uint64_t row = 0;
+    for (int j = i + 1; j < n; j += 2) {
+      const Lanes rj = load(s.r + j);
+      const Lanes ux = load(s.x + j) - xi, uy = load(s.y + j) - yi;
+      const Lanes d2 = ux * ux + uy * uy;
+      const Lanes rsum = ri + rj;
+      const Lanes rs2 = rsum * rsum;
+      const Mask meet = ~(d2 > rs2 + 8.0 * 2.220446049250313e-16 * select(d2 < rs2, rs2, d2));
+      Lanes a = {0.5, 0.5};
+      if (!kOneRadius) a = 0.5 + (ri * ri - rj * rj) / (2.0 * d2);
+      const Lanes h2 = ri * ri - a * a * d2;
+      const Lanes mcx = xi + ux * a - cx, mcy = yi + uy * a - cy;
+      const Lanes h2p = select(h2 < 0.0, zero, h2);  // std::max(h2, 0.0)
+      const Lanes t = mcx * mcx + mcy * mcy + h2p - lim * lim;
+      const Lanes n_mc = -uy * mcx + ux * mcy;
+      const Mask may = (t <= 0.0) | (t * t * d2 <= 4 * h2p * n_mc * n_mc * (1 + 1e-9));
+      const Mask keep = meet & may & (d2 != 0.0);
+      const std::uint64_t m0 = meet[0] & 1, m1 = meet[1] & (j + 1 < n);
+      row |= m0 << j | m1 << (j + 1);
+      meets[j] |= m0 << i;
+      meets[j + 1] |= m1 << i;
+      ki[nk] = i, kj[nk] = j;
+      nk += keep[0] != 0;
+      ki[nk] = i, kj[nk] = j + 1;
+      nk += (keep[1] != 0) & (j + 1 < n);
+    }
+    meets[i] |= row;
+  }
+  return nk;
+}
+
+// The crossings of the kept pairs that lie in the region (intersect_circles inline:
+// each computed once), in order, with their pairs; a point out of the region is written
+// and then written over, not branched around.
+template <bool kOneRadius>
+int crossings_in_region(const Disks& s, const std::uint8_t* ki, const std::uint8_t* kj, int nk,
+                        Vec2 center, double lim2, double* px, double* py, std::uint8_t* pi,
+                        std::uint8_t* pj) {
+  int np = 0;
+  for (int q = 0; q < nk; ++q) {
+    const int i = ki[q], j = kj[q];
+    const double r1 = s.r[i], r2 = s.r[j];
+    const double ux = s.x[j] - s.x[i], uy = s.y[j] - s.y[i];
+    const double d2 = ux * ux + uy * uy;
+    double a = 0.5;
+    if (!kOneRadius) {
+      const double rsum = r1 + r2, rdiff = r1 - r2;
+      const double slack = 8.0 * 2.220446049250313e-16 * std::max(d2, rsum * rsum);
+      if (d2 < rdiff * rdiff - slack) continue;  // nested (apart, or d2 = 0: not kept)
+      a = 0.5 + (r1 * r1 - r2 * r2) / (2.0 * d2);
+    }
+    const double mx = s.x[i] + ux * a, my = s.y[i] + uy * a;
+    const double h2 = r1 * r1 / d2 - a * a;
+    const bool two = !(h2 <= 0.0);  // else tangent: m alone
+    const double h = std::sqrt(two ? h2 : 0.0);
+    const double ox = -uy * h, oy = ux * h;
+    const double ax = two ? mx + ox : mx, ay = two ? my + oy : my;
+    const double bx = mx - ox, by = my - oy;
+    const double ea = (ax - center.x) * (ax - center.x) + (ay - center.y) * (ay - center.y);
+    const double eb = (bx - center.x) * (bx - center.x) + (by - center.y) * (by - center.y);
+    px[np] = ax, py[np] = ay, pi[np] = i, pj[np] = j;
+    np += ea <= lim2;
+    px[np] = bx, py[np] = by, pi[np] = i, pj[np] = j;
+    np += two & (eb <= lim2);
+  }
+  return np;
+}
+
+// 0, 1, 2, ... as doubles: lane indices to compare (SSE2 compares doubles, not 64-bit
+// integers).
+struct Indices {
+  alignas(16) double k[kNear + 2];
+  constexpr Indices() : k() {
+    for (int i = 0; i < kNear + 2; ++i) k[i] = i;
+  }
+};
+constexpr Indices kIndex;
+
+// corner_covered for the crossing (px, py) of the circles of i and j. A disk holding it
+// strictly settles CornerCover's verdict whichever comes first; only without one do the
+// disks through it count, handed over in order (add() skips the rest), so the
+// verdict, up to the cap on directions, is the same.
+bool crossing_covered(const Disks& s, const std::uint64_t* meets, double px, double py, int i,
+                      int j) {
+  const Lanes vx = {px, px}, vy = {py, py};
+  {
+    // Tried first: the first two disks whose circles meet both (a disk holding the
+    // crossing strictly does, up to rounding); they settle 4 in 5 crossings.
+    std::uint64_t both = meets[i] & meets[j];
+    const int k1 = both ? __builtin_ctzll(both) : s.n;  // s.n: padding
+    both &= both - 1;
+    const int k2 = both ? __builtin_ctzll(both) : s.n;
+    const Lanes ex = vx - Lanes{s.x[k1], s.x[k2]}, ey = vy - Lanes{s.y[k1], s.y[k2]};
+    const Mask in = ex * ex + ey * ey < Lanes{s.conflict2[k1], s.conflict2[k2]};
+    if (in[0] | in[1]) return true;
+  }
+  const Lanes li = {double(i), double(i)}, lj = {double(j), double(j)};
+  Mask strict = {0, 0}, any = {0, 0};
+  alignas(16) long long through[kNear + 2];
+  for (int k = 0; k < s.n; k += 2) {
+    const Lanes ex = vx - load(s.x + k), ey = vy - load(s.y + k);
+    const Lanes e2 = ex * ex + ey * ey;
+    const Lanes lk = load(kIndex.k + k);
+    const Mask other = (lk != li) & (lk != lj);
+    strict |= (e2 < load(s.conflict2 + k)) & other;
+    const Mask on = (e2 <= load(s.cover2 + k)) & other;
+    std::memcpy(through + k, &on, sizeof on);
+    any |= on;
+  }
+  if (strict[0] | strict[1]) return true;
+  if (!(any[0] | any[1])) return false;  // on no third circle: CornerCover has two directions
+  detail::CornerCover cover({px, py}, {s.x[i], s.y[i]}, {s.x[j], s.y[j]});
+  for (int k = 0; k < s.n; ++k) {
+    if (through[k]) cover.add({s.x[k], s.y[k]}, s.r[k]);
+  }
+  return cover.covered();
+}
+
+template <bool kOneRadius>
+void corners_of(const Packing& packing, const Disks& s, Vec2 center, double R,
+                std::vector<Corner>& out) {
+  const double lim = R * (1 + kRelTol);
+  std::uint8_t ki[kNear * (kNear - 1) / 2 + 1], kj[kNear * (kNear - 1) / 2 + 1];
+  std::uint64_t meets[kNear + 1];
+  const int nk = kept_pairs<kOneRadius>(s, center, lim, ki, kj, meets);
+  constexpr int kChunk = 32;  // pairs at a time, two crossings each
+  double px[2 * kChunk], py[2 * kChunk];
+  std::uint8_t pi[2 * kChunk], pj[2 * kChunk];
+  for (int q = 0; q < nk; q += kChunk) {
+    const int np = crossings_in_region<kOneRadius>(s, ki + q, kj + q, std::min(kChunk, nk - q),
+                                                   center, lim * lim, px, py, pi, pj);
+    for (int c = 0; c < np; ++c) {
+      // The domain test last: both are pure, and most crossings are covered.
+      const Vec2 x{px[c], py[c]};
+      if (!crossing_covered(s, meets, px[c], py[c], pi[c], pj[c]) && packing.inside(x))
+        out.push_back({x, s.id[pi[c]], s.id[pj[c]]});
+    }
+  }
+}
+
+}  // namespace
+
+void corners_in_region(const Packing& packing, Vec2 center, double R,
+                       const std::vector<DiskId>& ignore, std::vector<Corner>& out) {
+  Disks found;  // in the grid's order
+  alignas(16) double d2[kNear + 2];
+  bool wide = false;
+  const DiskId* ig = ignore.data();
+  const std::size_t ni = ignore.size();
+  const double rmax = packing.max_radius();
+  packing.for_each_near(center, (R + rmax) * (1 + 2 * kRelTol), [&](const Neighbor& g) {
+    for (std::size_t k = 0; k < ni; ++k)
+      if (ig[k] == g.id) return;
+    if (found.n == kNear) {
+      wide = true;
+      return;
+    }
+    const int k = found.n++;
+    found.x[k] = g.image.x, found.y[k] = g.image.y, found.r[k] = g.radius, found.id[k] = g.id,
+    d2[k] = g.d2;
+  });
+  if (wide) return corners_in_wide_region(packing, center, R, ignore, out);
+  if (found.n < 2) return;
+  Disks s;  // nearest the center first
+  sort_by_distance(found, d2, s);
+  bool one_radius = true;
+  for (int k = 1; k < s.n; ++k) one_radius &= s.r[k] == s.r[0];
+  if (one_radius)
+    corners_of<true>(packing, s, center, R, out);
+  else
+    corners_of<false>(packing, s, center, R, out);
 }
 
 namespace detail {
