@@ -1,10 +1,16 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+#include "disktune/voids.h"
+
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <memory>
+#include <vector>
 
 #include "disktune/sampling.h"
-#include "disktune/voids.h"
+#include "disktune/sizing.h"
+#include "disktune/tuning.h"
 #include "lattices.h"
 #include "test_util.h"
 
@@ -168,6 +174,104 @@ TEST(Corners, IsMaximalAgreesWithTheOracle) {
     non_maximal += !cut.maximal();
   }
   EXPECT_GT(non_maximal, 0);  // the comparison did see both answers
+}
+
+// The corners of corners_in_region against a brute force over every pair of disk
+// images near the region (all disks, all nine images in the box, no grid), on sampled
+// and tuned packings, one radius and radii that vary, at the regions the tuning asks
+// for (a disk lifted), at random centers, and at regions wide enough (4 r) to hold
+// more disks than the search's arrays (its other path). A crossing in the region held
+// by no third disk, by a margin, must be reported with its pair; one strictly inside a
+// third must not; each reported corner must be such a crossing not strictly held.
+// Crossings within 1e-7 r of a third circle are left out of the first rule (their
+// verdict is the tolerance's).
+TEST(Corners, RegionSearchMatchesABruteForceOverEveryPair) {
+  struct Image {
+    DiskId id;
+    Vec2 c;
+    double r;
+  };
+  std::size_t regions = 0, corners = 0, wide = 0;
+  for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+    const PeriodicBox box(1.0, 1.0);
+    Rng rng(seed);
+    const double r = 0.03;
+    Packing p = seed % 2 ? sample_mps(box, r, rng)
+                         : sample_mps(box,
+                                      std::make_shared<const Sizing>(expression_sizing(
+                                          "0.025 + 0.005 * sin(6.283185307179586 * x)")),
+                                      rng);
+    const double eta = seed <= 2 ? 0.8 : 0.7;
+    tune(p, box, Target::area_fraction(eta), rng);
+    const double rmax = p.max_radius();
+    const std::vector<DiskId> ids = p.ids();
+    const auto check = [&](Vec2 center, double R, const std::vector<DiskId>& ignore) {
+      std::vector<Corner> found;
+      corners_in_region(p, center, R, ignore, found);
+      std::vector<Image> near;
+      for (const DiskId d : ids) {
+        if (std::find(ignore.begin(), ignore.end(), d) != ignore.end()) continue;
+        for (int i = -1; i <= 1; ++i)
+          for (int j = -1; j <= 1; ++j) {
+            const Vec2 c = p.center(d) + Vec2{double(i), double(j)};
+            if (norm(c - center) <= R + 2 * rmax) near.push_back({d, c, p.radius(d)});
+          }
+      }
+      wide += near.size() > 48;
+      const auto held_by_third = [&](Vec2 x, std::size_t a, std::size_t b, double margin) {
+        for (std::size_t k = 0; k < near.size(); ++k)
+          if (k != a && k != b && norm(x - near[k].c) < near[k].r * (1 + margin)) return true;
+        return false;
+      };
+      std::vector<bool> matched(found.size(), false);
+      for (std::size_t a = 0; a < near.size(); ++a)
+        for (std::size_t b = a + 1; b < near.size(); ++b) {
+          const Vec2 u = near[b].c - near[a].c;
+          const double d = norm(u), ra = near[a].r, rb = near[b].r;
+          if (d > (ra + rb) * (1 + 1e-12) || d < std::abs(ra - rb) || d == 0) continue;
+          const double along = (d * d + ra * ra - rb * rb) / (2 * d);
+          const double half = std::sqrt(std::max(0.0, ra * ra - along * along));
+          const Vec2 e = u * (1 / d), n{-e.y, e.x};
+          for (const double side : {-1.0, 1.0}) {
+            const Vec2 x = near[a].c + e * along + n * (side * half);
+            const double to_rim = norm(x - center) - R;
+            const bool on_rim = std::abs(to_rim) < 1e-7 * r;  // in or out: either way
+            const bool in_region = to_rim < 0;
+            const bool held = held_by_third(x, a, b, -1e-7), clear = !held_by_third(x, a, b, 1e-7);
+            bool reported = false;
+            for (std::size_t k = 0; k < found.size(); ++k) {
+              const bool same_pair = (found[k].a == near[a].id && found[k].b == near[b].id) ||
+                                     (found[k].a == near[b].id && found[k].b == near[a].id);
+              if (same_pair && norm(found[k].point - x) < 1e-9) {
+                reported = true;
+                matched[k] = true;
+              }
+            }
+            if (on_rim) continue;
+            if (in_region && clear)
+              EXPECT_TRUE(reported) << "missed crossing at (" << x.x << ", " << x.y << ")";
+            if (held || !in_region)
+              EXPECT_FALSE(reported) << "held crossing at (" << x.x << ", " << x.y << ")";
+          }
+        }
+      for (std::size_t k = 0; k < found.size(); ++k)
+        EXPECT_TRUE(matched[k]) << "corner at (" << found[k].point.x << ", " << found[k].point.y
+                                << ") is no crossing of its two circles; "
+                                << norm(found[k].point - center) / R;
+      ++regions;
+      corners += found.size();
+    };
+    for (std::size_t k = 0; k < ids.size(); k += 3) {
+      const DiskId d = ids[k];
+      check(p.center(d), p.radius(d) * (1 + 1e-9), {d});  // the void lifting d leaves
+      const Vec2 z{uniform01(rng), uniform01(rng)};
+      check(z, r, {});
+      if (k % 30 == 0) check(z, 4 * r, {ids[(k + 1) % ids.size()]});
+    }
+  }
+  EXPECT_GT(corners, 1000u);  // the comparison saw corners, and regions of both paths
+  EXPECT_GT(wide, 10u);
+  EXPECT_GT(regions, 1000u);
 }
 
 }  // namespace
