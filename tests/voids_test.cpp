@@ -248,10 +248,12 @@ TEST(Corners, RegionSearchMatchesABruteForceOverEveryPair) {
               }
             }
             if (on_rim) continue;
-            if (in_region && clear)
+            if (in_region && clear) {
               EXPECT_TRUE(reported) << "missed crossing at (" << x.x << ", " << x.y << ")";
-            if (held || !in_region)
+            }
+            if (held || !in_region) {
               EXPECT_FALSE(reported) << "held crossing at (" << x.x << ", " << x.y << ")";
+            }
           }
         }
       for (std::size_t k = 0; k < found.size(); ++k)
