@@ -157,7 +157,7 @@ void add_tune_command(CLI::App& app, Action& action) {
   cmd->add_option(
          "--method", args->method,
          "auto: denser by void, then repeller, then grain injection (switching at eta "
-         "0.70 and 0.79, or when a phase stalls; one crystal where the grains stall, near "
+         "0.70 and 0.78, or when a phase stalls; one crystal where the grains stall, near "
          "0.86; to eta 0.84 and beyond grains from the start; on a curved surface void, then "
          "crystal injection from eta 0.75), sparser by sifting, then "
          "attractor, then "
