@@ -247,8 +247,8 @@ def test_ctrl_c_stops_a_long_tune():
     timer.start()
     try:
         with pytest.raises(KeyboardInterrupt):
-            # About ten seconds untouched (void and repeller injection; targets of 0.84 and
-            # more grow grains from the sample in about a second).
+            # About two seconds untouched (void and repeller injection; targets of 0.84 and
+            # more grow grains from the sample in well under a second).
             disktune.tune(s, area_fraction=0.80, seed=1)
     finally:
         timer.cancel()
@@ -264,7 +264,7 @@ def test_the_gil_is_released_while_tuning():
         spins += 1
     worker.join()
     assert len(done[0]) > len(s)
-    # Held for the whole tune (about a second), the GIL would leave this loop a few turns.
+    # Held for the whole tune (about 0.2 s), the GIL would leave this loop a few turns.
     assert spins > 10000
 
 
