@@ -16,6 +16,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "../geometry/threads.h"
 #include "../voids/final_check.h"
 #include "disktune/boundary.h"
 #include "disktune/errors.h"
@@ -96,14 +97,25 @@ double own_void_width(const P& packing, DiskId p) {
 template <class P>
 std::vector<DiskId> sparsest_first(const P& packing, const std::vector<DiskId>& order) {
   using S = Space<P>;
+  // Counted on every core (the counts only read the packing).
+  constexpr std::size_t kChunk = 256;
+  std::vector<std::size_t> near(order.size(), 0);
+  parallel_for((order.size() + kChunk - 1) / kChunk, thread_count(0),
+               [&](std::size_t chunk, unsigned) {
+                 for (std::size_t k = chunk * kChunk;
+                      k < std::min(order.size(), (chunk + 1) * kChunk); ++k) {
+                   const DiskId d = order[k];
+                   if (packing.flags(d) & kFixed) continue;  // not ranked (below)
+                   S::for_each_near(packing, packing.center(d), 2 * packing.radius(d),
+                                    [&](const auto& q) { near[k] += q.id != d; });
+                 }
+               });
   std::vector<std::pair<std::size_t, DiskId>> ranked;
   ranked.reserve(order.size());
-  for (const DiskId d : order) {
-    if (packing.flags(d) & kFixed) continue;  // a boundary disk: its neighbours are few anyway
-    std::size_t near = 0;
-    S::for_each_near(packing, packing.center(d), 2 * packing.radius(d),
-                     [&](const auto& q) { near += q.id != d; });
-    ranked.push_back({near, d});
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    if (packing.flags(order[k]) & kFixed)
+      continue;  // a boundary disk: its neighbours are few anyway
+    ranked.push_back({near[k], order[k]});
   }
   const std::size_t keep = std::max<std::size_t>(1, ranked.size() / 10);
   std::stable_sort(ranked.begin(), ranked.end(),
