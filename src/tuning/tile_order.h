@@ -22,7 +22,8 @@ inline constexpr double kTileRadii = 16;
 /// reach a few radii this is as random as the shuffle, but a tile's disks and grid cells
 /// stay in the cache while it is worked, where a shuffle of 10^6 disks reads memory at
 /// random: void injection from the unit box's MPS at r = 0.000835 (10^6 disks) to eta
-/// 0.70, 24.9 -> 16.8 s (tiles of 8 and 32 radii: 17.2 and 17.0 s; docs/tuning.md).
+/// 0.70, 24.9 -> 15.7 s (tiles of 8 and 32 radii, in a first version: 17.2 and 17.0 s,
+/// 16 radii 16.8 s; docs/tuning.md).
 inline std::vector<DiskId> tiled(const Packing& packing, const std::vector<DiskId>& order,
                                  Rng& rng) {
   if (order.empty()) return order;
