@@ -17,7 +17,6 @@
 namespace disktune {
 namespace {
 
-
 // True when the corner x of the circles of a and b (indices i and j in `near`, if there)
 // is covered by the other disks of `near`; other images of a and b do count.
 bool corner_covered(const std::vector<Neighbor>& near, Vec2 x, Vec2 a, Vec2 b, std::size_t i,
@@ -53,9 +52,27 @@ std::optional<Vec2> uncovered_boundary_point(const Packing& packing) {
   return std::nullopt;
 }
 
-}  // namespace
+// When no other circle meets p's (the void surrounds p, unless a disk holds all of p's
+// circle): the first of four points of the circle that lies in the domain and that
+// covered() says no disk covers.
+template <class Covered>
+void isolated_corner(const Packing& packing, DiskId p, Covered covered, std::vector<Corner>& out) {
+  const Vec2 c = packing.center(p);
+  const double r = packing.radius(p);
+  for (const Vec2 dir : {Vec2{1, 0}, Vec2{0, 1}, Vec2{-1, 0}, Vec2{0, -1}}) {
+    const Vec2 probe = c + dir * r;
+    if (packing.inside(probe) && !covered(probe)) {
+      out.push_back({probe, p, kNoDisk});
+      return;
+    }
+  }
+}
 
-void corners_on_circle(const Packing& packing, DiskId p, std::vector<Corner>& out) {
+// The search as it was, kept for circles with more disks near them than the arrays below
+// hold (small disks among ones several times larger): the same corners in the same order.
+// The grid is asked twice then, as for a wide region; holding the disks found for it
+// made every other call slower.
+void corners_on_wide_circle(const Packing& packing, DiskId p, std::vector<Corner>& out) {
   const Vec2 c = packing.center(p);
   const double r = packing.radius(p);
   // Only disks within r + r_max can meet p's circle or cover a point of it.
@@ -75,18 +92,9 @@ void corners_on_circle(const Packing& packing, DiskId p, std::vector<Corner>& ou
       }
     }
   }
-  if (!met) {  // the void surrounds p: any uncovered point of its circle in the domain
-    for (const Vec2 dir : {Vec2{1, 0}, Vec2{0, 1}, Vec2{-1, 0}, Vec2{0, -1}}) {
-      const Vec2 probe = c + dir * r;
-      if (packing.inside(probe) && !covered_by_others(near, probe, none)) {
-        out.push_back({probe, p, kNoDisk});
-        break;
-      }
-    }
-  }
+  const auto covered = [&](Vec2 x) { return covered_by_others(near, x, none); };
+  if (!met) isolated_corner(packing, p, covered, out);
 }
-
-namespace {
 
 // The search as it was, kept for regions holding more disks than the arrays below (a
 // call with a region several radii wide): the same corners in the same order.
@@ -121,7 +129,8 @@ void corners_in_wide_region(const Packing& packing, Vec2 center, double R,
 }
 
 // A region of a dense packing holds 10-20 disks (R = r: 12 on average in the README's
-// job); past this, corners_in_wide_region. At most 64: sets of disks are bits of a word.
+// job), a circle 7-19 (an MPS 7.5, a crystal 17); past this, corners_in_wide_region and
+// corners_on_wide_circle. At most 64: sets of disks are bits of a word.
 constexpr int kNear = 48;
 
 // Two doubles side by side (GCC and Clang vector extensions: SSE2 or NEON code, else
@@ -152,6 +161,33 @@ struct Disks {
       cover2[kNear + 2];  // is_conflict's and is_covered's bounds, squared
   DiskId id[kNear];
 };
+
+// Appends to d, in the grid's order, the disks within R of center that skip() lets
+// through, and their d2; false when they are more than kNear (then d is not all of them).
+template <class Skip>
+bool find_disks(const Packing& packing, Vec2 center, double R, Skip skip, Disks& d, double* d2) {
+  bool wide = false;
+  packing.for_each_near(center, R, [&](const Neighbor& g) {
+    if (skip(g)) return;
+    if (d.n == kNear) {
+      wide = true;
+      return;
+    }
+    const int k = d.n++;
+    d.x[k] = g.image.x, d.y[k] = g.image.y, d.r[k] = g.radius, d.id[k] = g.id, d2[k] = g.d2;
+  });
+  return !wide;
+}
+
+// The squared bounds of the disks' radii and the padding past the last one.
+void finish(Disks& s) {
+  for (int k = 0; k < s.n; ++k) {
+    const double lo = s.r[k] * (1.0 - kRelTol), hi = s.r[k] * (1.0 + kRelTol);
+    s.conflict2[k] = lo * lo, s.cover2[k] = hi * hi;
+  }
+  for (int k = s.n; k < s.n + 2; ++k)
+    s.x[k] = s.y[k] = HUGE_VAL, s.r[k] = s.conflict2[k] = s.cover2[k] = 0.0;
+}
 
 // The disks found, nearest the center first, as std::sort by d2 orders them. Without
 // equal d2 every sort gives the one order, here by ranks (no branches); with some (2 %
@@ -187,11 +223,8 @@ void sort_by_distance(const Disks& found, double* d2, Disks& s) {
   for (int k = 0; k < n; ++k) {
     const int to = rank[k];
     s.x[to] = found.x[k], s.y[to] = found.y[k], s.r[to] = found.r[k], s.id[to] = found.id[k];
-    const double lo = found.r[k] * (1.0 - kRelTol), hi = found.r[k] * (1.0 + kRelTol);
-    s.conflict2[to] = lo * lo, s.cover2[to] = hi * hi;
   }
-  for (int k = n; k < n + 2; ++k)
-    s.x[k] = s.y[k] = HUGE_VAL, s.r[k] = s.conflict2[k] = s.cover2[k] = 0.0;
+  finish(s);
 }
 
 // The pairs (i, j), i < j, that too_far_apart_to_meet and intersections_may_lie_in
@@ -238,9 +271,40 @@ int kept_pairs(const Disks& s, Vec2 center, double lim, std::uint8_t* ki, std::u
   return nk;
 }
 
-// The crossings of the kept pairs that lie in the region (intersect_circles inline:
-// each computed once), in order, with their pairs; a point out of the region is written
-// and then written over, not branched around.
+// intersect_circles for the circle (x1, y1, r1) and that of disk i of s, not concentric
+// and not too far apart to meet: how many points it finds (a, then b), 0 when one circle
+// is inside the other. Without branches, for the region's pairs and the circle's
+// crossings alike; always inlined (a call per circle was a twentieth of a circle's
+// search). With one radius a = 0.5 + 0 / (2 d2) is 0.5 exactly and no circle is inside
+// another.
+template <bool kOneRadius>
+inline __attribute__((always_inline)) int intersect(double x1, double y1, double r1, const Disks& s,
+                                                    int i, double& ax, double& ay, double& bx,
+                                                    double& by) {
+  const double r2 = s.r[i];
+  const double ux = s.x[i] - x1, uy = s.y[i] - y1;
+  const double d2 = ux * ux + uy * uy;
+  bool nested = false;
+  double a = 0.5;
+  if (!kOneRadius) {
+    const double rsum = r1 + r2, rdiff = r1 - r2;
+    const double slack = 8.0 * 2.220446049250313e-16 * std::max(d2, rsum * rsum);
+    nested = d2 < rdiff * rdiff - slack;
+    a = 0.5 + (r1 * r1 - r2 * r2) / (2.0 * d2);
+  }
+  const double mx = x1 + ux * a, my = y1 + uy * a;
+  const double h2 = r1 * r1 / d2 - a * a;
+  const bool two = !(h2 <= 0.0);  // else tangent: m alone
+  const double h = std::sqrt(two ? h2 : 0.0);
+  const double ox = -uy * h, oy = ux * h;
+  ax = two ? mx + ox : mx, ay = two ? my + oy : my;
+  bx = mx - ox, by = my - oy;
+  return !nested * (1 + two);
+}
+
+// The crossings of the kept pairs that lie in the region (each computed once), in
+// order, with their pairs; a point out of the region is written and then written over,
+// not branched around.
 template <bool kOneRadius>
 int crossings_in_region(const Disks& s, const std::uint8_t* ki, const std::uint8_t* kj, int nk,
                         Vec2 center, double lim2, double* px, double* py, std::uint8_t* pi,
@@ -248,29 +312,14 @@ int crossings_in_region(const Disks& s, const std::uint8_t* ki, const std::uint8
   int np = 0;
   for (int q = 0; q < nk; ++q) {
     const int i = ki[q], j = kj[q];
-    const double r1 = s.r[i], r2 = s.r[j];
-    const double ux = s.x[j] - s.x[i], uy = s.y[j] - s.y[i];
-    const double d2 = ux * ux + uy * uy;
-    double a = 0.5;
-    if (!kOneRadius) {
-      const double rsum = r1 + r2, rdiff = r1 - r2;
-      const double slack = 8.0 * 2.220446049250313e-16 * std::max(d2, rsum * rsum);
-      if (d2 < rdiff * rdiff - slack) continue;  // nested (apart, or d2 = 0: not kept)
-      a = 0.5 + (r1 * r1 - r2 * r2) / (2.0 * d2);
-    }
-    const double mx = s.x[i] + ux * a, my = s.y[i] + uy * a;
-    const double h2 = r1 * r1 / d2 - a * a;
-    const bool two = !(h2 <= 0.0);  // else tangent: m alone
-    const double h = std::sqrt(two ? h2 : 0.0);
-    const double ox = -uy * h, oy = ux * h;
-    const double ax = two ? mx + ox : mx, ay = two ? my + oy : my;
-    const double bx = mx - ox, by = my - oy;
+    double ax, ay, bx, by;
+    const int count = intersect<kOneRadius>(s.x[i], s.y[i], s.r[i], s, j, ax, ay, bx, by);
     const double ea = (ax - center.x) * (ax - center.x) + (ay - center.y) * (ay - center.y);
     const double eb = (bx - center.x) * (bx - center.x) + (by - center.y) * (by - center.y);
     px[np] = ax, py[np] = ay, pi[np] = i, pj[np] = j;
-    np += ea <= lim2;
+    np += (count > 0) & (ea <= lim2);
     px[np] = bx, py[np] = by, pi[np] = i, pj[np] = j;
-    np += two & (eb <= lim2);
+    np += (count == 2) & (eb <= lim2);
   }
   return np;
 }
@@ -285,24 +334,13 @@ struct Indices {
 };
 constexpr Indices kIndex;
 
-// corner_covered for the crossing (px, py) of the circles of i and j. A disk holding it
-// strictly settles CornerCover's verdict whichever comes first; only without one do the
-// disks through it count, handed over in order (add() skips the rest), so the
-// verdict, up to the cap on directions, is the same.
-bool crossing_covered(const Disks& s, const std::uint64_t* meets, double px, double py, int i,
-                      int j) {
+// corner_covered(near, x, a, b, i, j) for the crossing x of the circles centered at a
+// and b, those of disks i and j of s (-1: a disk not in s), over all other disks of s. A
+// disk holding x strictly settles CornerCover's verdict whichever comes first; only
+// without one do the disks through it count, handed over in order (add() skips the
+// rest), so the verdict, up to the cap on directions, is the same.
+bool scan_covered(const Disks& s, double px, double py, Vec2 a, int i, Vec2 b, int j) {
   const Lanes vx = {px, px}, vy = {py, py};
-  {
-    // Tried first: the first two disks whose circles meet both (a disk holding the
-    // crossing strictly does, up to rounding); they settle 4 in 5 crossings.
-    std::uint64_t both = meets[i] & meets[j];
-    const int k1 = both ? __builtin_ctzll(both) : s.n;  // s.n: padding
-    both &= both - 1;
-    const int k2 = both ? __builtin_ctzll(both) : s.n;
-    const Lanes ex = vx - Lanes{s.x[k1], s.x[k2]}, ey = vy - Lanes{s.y[k1], s.y[k2]};
-    const Mask in = ex * ex + ey * ey < Lanes{s.conflict2[k1], s.conflict2[k2]};
-    if (in[0] | in[1]) return true;
-  }
   const Lanes li = {double(i), double(i)}, lj = {double(j), double(j)};
   Mask strict = {0, 0}, any = {0, 0};
   alignas(16) long long through[kNear + 2];
@@ -318,11 +356,28 @@ bool crossing_covered(const Disks& s, const std::uint64_t* meets, double px, dou
   }
   if (strict[0] | strict[1]) return true;
   if (!(any[0] | any[1])) return false;  // on no third circle: CornerCover has two directions
-  detail::CornerCover cover({px, py}, {s.x[i], s.y[i]}, {s.x[j], s.y[j]});
+  detail::CornerCover cover({px, py}, a, b);
   for (int k = 0; k < s.n; ++k) {
     if (through[k]) cover.add({s.x[k], s.y[k]}, s.r[k]);
   }
   return cover.covered();
+}
+
+// scan_covered for the crossing (px, py) of the circles of i and j, after a first try.
+bool crossing_covered(const Disks& s, const std::uint64_t* meets, double px, double py, int i,
+                      int j) {
+  {
+    // Tried first: the first two disks whose circles meet both (a disk holding the
+    // crossing strictly does, up to rounding); they settle 4 in 5 crossings.
+    std::uint64_t both = meets[i] & meets[j];
+    const int k1 = both ? __builtin_ctzll(both) : s.n;  // s.n: padding
+    both &= both - 1;
+    const int k2 = both ? __builtin_ctzll(both) : s.n;
+    const Lanes ex = px - Lanes{s.x[k1], s.x[k2]}, ey = py - Lanes{s.y[k1], s.y[k2]};
+    const Mask in = ex * ex + ey * ey < Lanes{s.conflict2[k1], s.conflict2[k2]};
+    if (in[0] | in[1]) return true;
+  }
+  return scan_covered(s, px, py, {s.x[i], s.y[i]}, i, {s.x[j], s.y[j]}, j);
 }
 
 template <bool kOneRadius>
@@ -347,28 +402,74 @@ void corners_of(const Packing& packing, const Disks& s, Vec2 center, double R,
   }
 }
 
+// p's corners: its crossings with the circles of the disks near it, in the grid's order,
+// as intersect_circles(c, r, image, radius) gives them. Nearly every crossing is held
+// strictly by some disk, but seldom by one a cheap first guess names (for p and a
+// neighbour, the disks whose circles meet both are most of the neighbours; the next one
+// round p holds the crossing half the time when packings are dense), so every crossing
+// is tested against every disk, four crossings and two disks at a time, without
+// branches; the few not held go to scan_covered. False when no circle meets p's.
+template <bool kOneRadius>
+bool circle_corners(const Packing& packing, DiskId p, const Disks& s, std::vector<Corner>& out) {
+  const Vec2 c = packing.center(p);
+  const double r = packing.radius(p);
+  // The crossings in order, each with its disk; a point that is not one is written and
+  // then written over, not branched around.
+  double px[2 * kNear + 4], py[2 * kNear + 4];
+  int pj[2 * kNear + 4];
+  int np = 0;
+  for (int j = 0; j < s.n; ++j) {
+    const double ux = s.x[j] - c.x, uy = s.y[j] - c.y;
+    const double d2 = ux * ux + uy * uy;
+    const bool meet = (d2 != 0.0) & !too_far_apart_to_meet(d2, r + s.r[j]);
+    double ax, ay, bx, by;
+    const int count = meet * intersect<kOneRadius>(c.x, c.y, r, s, j, ax, ay, bx, by);
+    px[np] = ax, py[np] = ay, pj[np] = j;
+    np += count > 0;
+    px[np] = bx, py[np] = by, pj[np] = j;
+    np += count == 2;
+  }
+  for (int q = np; q < np + 4; ++q) px[q] = py[q] = 0.0;  // the last four's padding
+  for (int q0 = 0; q0 < np; q0 += 4) {
+    Mask in[4] = {};
+    for (int k = 0; k < s.n; k += 2) {
+      const Lanes kx = load(s.x + k), ky = load(s.y + k), lim2 = load(s.conflict2 + k);
+      for (int q = 0; q < 4; ++q) {
+        const Lanes ex = px[q0 + q] - kx, ey = py[q0 + q] - ky;
+        in[q] |= ex * ex + ey * ey < lim2;
+      }
+    }
+    for (int q = 0; q < 4 && q0 + q < np; ++q) {
+      const double x = px[q0 + q], y = py[q0 + q];
+      const int j = pj[q0 + q];
+      // Disk j was tested too: it holds neither of its crossings strictly but for
+      // rounding, and where it seems to, the scan decides.
+      const double ex = x - s.x[j], ey = y - s.y[j];
+      const bool held = (in[q][0] | in[q][1]) && !(ex * ex + ey * ey < s.conflict2[j]);
+      // The domain test last: both are pure, and most crossings are covered.
+      if (!held && !scan_covered(s, x, y, c, -1, {s.x[j], s.y[j]}, j) && packing.inside({x, y}))
+        out.push_back({{x, y}, p, s.id[j]});
+    }
+  }
+  return np > 0;
+}
+
 }  // namespace
 
 void corners_in_region(const Packing& packing, Vec2 center, double R,
                        const std::vector<DiskId>& ignore, std::vector<Corner>& out) {
   Disks found;  // in the grid's order
   alignas(16) double d2[kNear + 2];
-  bool wide = false;
   const DiskId* ig = ignore.data();
   const std::size_t ni = ignore.size();
-  const double rmax = packing.max_radius();
-  packing.for_each_near(center, (R + rmax) * (1 + 2 * kRelTol), [&](const Neighbor& g) {
+  const auto ignored = [&](const Neighbor& g) {
     for (std::size_t k = 0; k < ni; ++k)
-      if (ig[k] == g.id) return;
-    if (found.n == kNear) {
-      wide = true;
-      return;
-    }
-    const int k = found.n++;
-    found.x[k] = g.image.x, found.y[k] = g.image.y, found.r[k] = g.radius, found.id[k] = g.id,
-    d2[k] = g.d2;
-  });
-  if (wide) return corners_in_wide_region(packing, center, R, ignore, out);
+      if (ig[k] == g.id) return true;
+    return false;
+  };
+  const double reach = (R + packing.max_radius()) * (1 + 2 * kRelTol);
+  if (!find_disks(packing, center, reach, ignored, found, d2))
+    return corners_in_wide_region(packing, center, R, ignore, out);
   if (found.n < 2) return;
   Disks s;  // nearest the center first
   sort_by_distance(found, d2, s);
@@ -378,6 +479,32 @@ void corners_in_region(const Packing& packing, Vec2 center, double R,
     corners_of<true>(packing, s, center, R, out);
   else
     corners_of<false>(packing, s, center, R, out);
+}
+
+void corners_on_circle(const Packing& packing, DiskId p, std::vector<Corner>& out) {
+  const Vec2 c = packing.center(p);
+  const double r = packing.radius(p);
+  Disks s;  // in the grid's order, p not among them (its other images are)
+  alignas(16) double d2[kNear + 2];
+  // Only disks within r + r_max can meet p's circle or cover a point of it.
+  const auto self = [p](const Neighbor& g) { return g.id == p && g.d2 == 0.0; };
+  if (!find_disks(packing, c, (r + packing.max_radius()) * (1 + 2 * kRelTol), self, s, d2))
+    return corners_on_wide_circle(packing, p, out);
+  finish(s);
+  bool one_radius = true;
+  for (int k = 0; k < s.n; ++k) one_radius &= s.r[k] == r;
+  const bool met = one_radius ? circle_corners<true>(packing, p, s, out)
+                              : circle_corners<false>(packing, p, s, out);
+  if (!met) {  // covered_by_others over s
+    isolated_corner(
+        packing, p,
+        [&](Vec2 x) {
+          for (int k = 0; k < s.n; ++k)
+            if (is_covered(squared_distance(x, {s.x[k], s.y[k]}), s.r[k])) return true;
+          return false;
+        },
+        out);
+  }
 }
 
 namespace detail {
