@@ -19,6 +19,8 @@ SpatialGrid::SpatialGrid(const Frame& frame, double max_cell_size) : frame_(fram
   ny_ = cells(frame.extent.y);
   hx_ = frame.extent.x / nx_;
   hy_ = frame.extent.y / ny_;
+  inv_hx_ = 1 / hx_;
+  inv_hy_ = 1 / hy_;
   capacity_ = 1;
   count_.assign(static_cast<std::size_t>(nx_) * ny_, 0);
   slots_.resize(count_.size() * capacity_);
@@ -43,6 +45,7 @@ void SpatialGrid::remove(DiskId id, Vec2 p) {
   for (int k = 0; k < n; ++k) {
     if (s[k].id == id) {
       s[k] = s[n - 1];
+      s[n - 1] = Slot{};
       --count_[c];
       return;
     }
