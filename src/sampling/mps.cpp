@@ -12,6 +12,8 @@
 //     known to be covered: the sample is maximal.
 #include <algorithm>
 #include <chrono>
+#include <cstdint>
+#include <vector>
 
 #include "../geometry/threads.h"
 #include "../voids/final_check.h"
@@ -27,43 +29,68 @@ using detail::DartGrid;
 namespace {
 
 // Throws the darts of one level. Cells filled during the level stay in the list (a
-// dart there simply conflicts), so the list is fixed and darts can be drawn ahead of
-// use: a short pipeline prefetches each dart's neighbourhood, because this loop is
-// bound by memory latency, not arithmetic.
-std::size_t throw_darts(DartGrid& grid, const CellList& active, int level,
-                        std::size_t throws, Rng& rng) {
-  constexpr std::size_t kAhead = 16, kHalf = kAhead / 2;
+// dart there simply conflicts), so the list is fixed. The darts go in blocks: their
+// random numbers drawn in order on one thread (in the order the numbers have always been
+// drawn in, so samples stay as they were); then, on every core, each dart placed in its
+// cell and tested against the centers put before the block, most failing there (centers
+// are only added within a level, so a dart that conflicts then conflicts at its turn
+// too); the rest land in order, tested again: the same centers for any thread count.
+// The loops are bound by memory latency, so each fetches ahead what it will read.
+std::size_t throw_darts(DartGrid& grid, const CellList& active, int level, std::size_t throws,
+                        Rng& rng, unsigned threads) {
   struct Dart {
     std::size_t slot;
+    double u, v;  // where in its cell, as fractions of the cell's sides
     Vec2 z;
     Cell base;
   };
-  Dart ring[kAhead];
+  // Each dart's cell is drawn eight darts ahead of its place in the cell.
+  constexpr std::size_t kAhead = 8;
+  std::size_t slots[kAhead];
+  for (std::size_t t = 0; t < std::min(throws, kAhead); ++t)
+    slots[t] = uniform_index(rng, active.size());
   const Vec2 size = grid.size(level);
-  auto draw = [&](std::size_t t) {  // stage 1: pick the cell, fetch its list entry
-    ring[t % kAhead].slot = uniform_index(rng, active.size());
-    __builtin_prefetch(&active[ring[t % kAhead].slot]);
-  };
-  auto aim = [&](std::size_t t) {  // stage 2: place the dart, fetch its block
-    Dart& d = ring[t % kAhead];
-    const Cell c = active[d.slot];
-    d.z = grid.corner(c, level) + Vec2{uniform01(rng) * size.x, uniform01(rng) * size.y};
-    d.base = grid.base_of(c, level);
-    grid.prefetch_block(d.base);
-  };
-  for (std::size_t t = 0; t < std::min(throws, kHalf); ++t) draw(t);
-  for (std::size_t t = 0; t < std::min(throws, kHalf); ++t) {
-    aim(t);
-    if (t + kHalf < throws) draw(t + kHalf);
-  }
+  constexpr std::size_t kBlock = std::size_t{1} << 16, kChunk = std::size_t{1} << 12;
+  std::vector<Dart> block;
+  std::vector<char> open;
+  std::vector<std::uint32_t> left;
   std::size_t accepted = 0;
-  for (std::size_t t = 0; t < throws; ++t) {  // stage 3: the dart lands
-    const Dart d = ring[t % kAhead];
-    if (t + kHalf < throws) aim(t + kHalf);
-    if (t + kAhead < throws) draw(t + kAhead);
-    if (grid.conflicts(d.z, d.base)) continue;
-    grid.put(d.base, d.z);
-    ++accepted;
+  for (std::size_t first = 0; first < throws; first += kBlock) {
+    const std::size_t n = std::min(kBlock, throws - first);
+    block.resize(n);
+    for (std::size_t k = 0; k < n; ++k) {
+      const std::size_t t = first + k;
+      Dart& d = block[k];
+      d.slot = slots[t % kAhead];
+      d.u = uniform01(rng);
+      d.v = uniform01(rng);
+      if (t + kAhead < throws) slots[t % kAhead] = uniform_index(rng, active.size());
+    }
+    open.assign(n, 0);
+    detail::parallel_for((n + kChunk - 1) / kChunk, threads, [&](std::size_t chunk, unsigned) {
+      const std::size_t lo = chunk * kChunk, hi = std::min(n, lo + kChunk);
+      for (std::size_t k = lo; k < hi; ++k) {
+        if (k + 32 < hi) __builtin_prefetch(&active[block[k + 32].slot]);
+        Dart& d = block[k];
+        const Cell c = active[d.slot];
+        d.z = grid.corner(c, level) + Vec2{d.u * size.x, d.v * size.y};
+        d.base = grid.base_of(c, level);
+      }
+      for (std::size_t k = lo; k < hi; ++k) {
+        if (k + 16 < hi) grid.prefetch_block(block[k + 16].base);
+        open[k] = !grid.conflicts(block[k].z, block[k].base);
+      }
+    });
+    left.clear();
+    for (std::size_t k = 0; k < n; ++k)
+      if (open[k]) left.push_back(static_cast<std::uint32_t>(k));
+    for (std::size_t i = 0; i < left.size(); ++i) {  // the darts land
+      if (i + 8 < left.size()) grid.prefetch_block(block[left[i + 8]].base);
+      const Dart& d = block[left[i]];
+      if (grid.conflicts(d.z, d.base)) continue;
+      grid.put(d.base, d.z);
+      ++accepted;
+    }
   }
   return accepted;
 }
@@ -94,7 +121,7 @@ Packing sample_mps(const PeriodicBox& box, double r, Rng& rng, const MpsOptions&
   int level = 0;
   for (; level < options.levels && !active.empty(); ++level) {
     const auto throws = static_cast<std::size_t>(options.darts_per_active_cell * active.size());
-    st.dart_disks += throw_darts(grid, active, level, throws, rng);
+    st.dart_disks += throw_darts(grid, active, level, throws, rng, detail::thread_count(0));
     st.darts += throws;
     lap(st.darts_seconds);
     // Keep what is still uncovered, split in four for the next level.
