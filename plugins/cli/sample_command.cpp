@@ -76,7 +76,8 @@ void add_sample_command(CLI::App& app, Action& action) {
   job->domain.guarded = true;
   add_memory_option(cmd, job->domain.max_memory);
   add_seed_option(cmd, job->seed);
-  add_threads_option(cmd, job->threads, "Threads for the final check of the sample");
+  add_threads_option(cmd, job->threads,
+                     "Threads for the sample's tests of darts and cells and its final check");
   writes_file(cmd->add_option("--output,-o", job->output, "CSV file to write (header x,y,r; x,y,z,r on a surface)"));
   writes_file(cmd->add_option("--svg", job->svg, "Also draw the packing as an SVG picture (not on a surface)"));
   cmd->callback([job, &action] { action = [job] { return run_sample(*job); }; });
