@@ -7,10 +7,14 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <memory>
 #include <vector>
 
+#include "disktune/planar_domain.h"
 #include "disktune/sampling.h"
+#include "disktune/tuning.h"
 
 namespace disktune {
 namespace {
@@ -88,30 +92,48 @@ TEST(PhaseTimeLeft, AStalledCountNeverGetsThereAndAReachedGoalHasNothingLeft) {
 }
 
 TEST(PhaseTimeLeft, TuneReportsWhereEachPhaseHandsOver) {
-  const PeriodicBox box(1, 1);
   const double r = 0.02;
-  Rng rng(7);
-  Packing p = sample_mps(box, r, rng);
-  // The count at area fraction 1: the box's area over a disk of radius r/2.
+  // The count at area fraction 1: the unit square's area over a disk of radius r/2.
   const double unit = 1.0 / (M_PI * r * r / 4);
   const auto count_at = [&](double eta) { return static_cast<std::size_t>(std::ceil(eta * unit)); };
-  const std::size_t target = count_at(0.77);
+  const auto goals = [](const std::vector<Progress>& seen, Phase phase) {
+    std::vector<std::size_t> out;
+    for (const Progress& s : seen)
+      if (s.phase == phase) out.push_back(s.phase_goal);
+    return out;
+  };
   std::vector<Progress> seen;
   TuneOptions options;
   options.on_progress = [&](const Progress& progress) { return seen.push_back(progress), true; };
-  ASSERT_TRUE(tune(p, box, Target::count(target), rng, options).reached);
-  std::size_t void_reports = 0, repeller_reports = 0;
-  for (const Progress& s : seen) {
-    if (s.phase == Phase::void_injection) {
-      ++void_reports;
-      EXPECT_EQ(s.phase_goal, count_at(options.void_until));  // 0.70
-    } else if (s.phase == Phase::repeller_injection) {
-      ++repeller_reports;
-      EXPECT_EQ(s.phase_goal, target);  // before its own repeller_until, 0.78
-    }
+  {  // The periodic box: squeeze injection to squeeze_until (0.82), then the grains.
+    const PeriodicBox box(1, 1);
+    Rng rng(7);
+    Packing p = sample_mps(box, r, rng);
+    const std::size_t target = count_at(0.83);
+    ASSERT_TRUE(tune(p, box, Target::count(target), rng, options).reached);
+    const auto squeeze = goals(seen, Phase::squeeze_injection),
+               grains = goals(seen, Phase::grain_injection);
+    ASSERT_FALSE(squeeze.empty());
+    ASSERT_FALSE(grains.empty());
+    for (const std::size_t g : squeeze) EXPECT_EQ(g, count_at(options.squeeze_until));
+    for (const std::size_t g : grains) EXPECT_EQ(g, target);
   }
-  EXPECT_GT(void_reports, 0u);
-  EXPECT_GT(repeller_reports, 0u);
+  seen.clear();
+  {  // A planar domain: void injection to void_until (0.70), then the repeller.
+    const auto square =
+        std::make_shared<const PlanarDomain>(std::vector<Vec2>{{0, 0}, {1, 0}, {1, 1}, {0, 1}});
+    Rng rng(7);
+    Packing p = sample_mps(square, r, rng);
+    const std::size_t target = target_count(Target::area_fraction(0.77), p, 1.0);
+    ASSERT_TRUE(tune(p, *square, Target::count(target), rng, options).reached);
+    const auto voids = goals(seen, Phase::void_injection),
+               repeller = goals(seen, Phase::repeller_injection);
+    ASSERT_FALSE(voids.empty());
+    ASSERT_FALSE(repeller.empty());
+    for (const std::size_t g : voids) EXPECT_EQ(g, std::min(target, count_at(options.void_until)));
+    for (const std::size_t g : repeller)
+      EXPECT_EQ(g, target);  // before its own repeller_until, 0.78
+  }
 }
 
 }  // namespace

@@ -47,7 +47,8 @@ enum class Phase {
   void_injection,
   repeller_injection,
   crystal_injection,
-  grain_injection,  // crystal injection from many nuclei (grain_inject)
+  grain_injection,    // crystal injection from many nuclei (grain_inject)
+  squeeze_injection,  // disks at the largest holes, conflicts pushed apart (squeeze_inject)
   angle_injection,
   sift_ejection,
   attractor_ejection,
@@ -60,9 +61,10 @@ std::string to_string(Phase phase);
 
 /// How `tune` picks operations: `automatic` runs the phases in the paper's order,
 /// switching at the area-fraction thresholds or when a phase stops making progress
-/// (with one radius and off curved surfaces: void, repeller, then grain injection, then
-/// one crystal where the grains stall; to grains_from_sample and beyond, grains from the
-/// start);
+/// (in the periodic box with one radius: squeeze injection, then grain injection, then
+/// one crystal where the grains stall; in a planar domain with one radius: void,
+/// repeller, then the grains and the crystal; to grains_from_sample and beyond, grains
+/// from the start);
 /// the others run one phase alone (angle injection is not part of the automatic
 /// schedule: the paper offers it as an alternative that targets obtuse triangles).
 /// Targets below the current count run ejection: automatic is sifting, then attractor
@@ -79,14 +81,15 @@ enum class Method {
   repeller_injection,
   crystal_injection,
   grain_injection,
+  squeeze_injection,
   angle_injection,
   sift_ejection,
   attractor_ejection,
   crystal_ejection
 };
-/// The method called `name`: auto, void, repeller, crystal, grains, angle, sift, attractor or
-/// crystal-eject (the names `disktune tune --method` takes). Throws InvalidInput, listing
-/// them, for any other.
+/// The method called `name`: auto, void, repeller, crystal, grains, squeeze, angle, sift,
+/// attractor or crystal-eject (the names `disktune tune --method` takes). Throws InvalidInput,
+/// listing them, for any other.
 Method method_named(const std::string& name);
 
 struct Progress {
@@ -109,6 +112,11 @@ struct TuneOptions {
   /// surface_void_until.
   double void_until = 0.70;
   double repeller_until = 0.78;
+  /// In the periodic box with one radius, squeeze injection replaces void and repeller
+  /// injection and hands over to the grains here: to eta 0.80 it leaves 12 % of the
+  /// disks locally hexagonal where the grains leave half, in half the time; past 0.82 it
+  /// slows and orders the packing as it nears jamming (docs/tuning.md).
+  double squeeze_until = 0.82;
   double surface_void_until = 0.75;
   /// Targets at or past this area fraction skip void and repeller injection: grain
   /// injection starts from the packing as given (one radius, off curved surfaces). There
@@ -202,6 +210,19 @@ inline constexpr std::size_t kDisksPerGrain = 300;
 std::size_t grain_inject(Packing& packing, Rng& rng, std::size_t max_added,
                          const std::function<void()>& after_step = {},
                          std::size_t disks_per_grain = kDisksPerGrain);
+
+/// Squeeze injection (beyond the paper; the periodic box, one radius): in stages, new
+/// disks at the largest holes of the Delaunay triangulation (the largest circumcircles,
+/// no two new centers closer than r), then every conflicting pair pushed apart until
+/// none is left, then the voids the moves opened refilled; each stage adds max_added
+/// disks at once (fewer where it would not settle, or its refill would pass max_added:
+/// then it is taken back and tried smaller). A stage moves many disks: the packing is
+/// conflict-free and maximal before and after it, not in between. `after_step` runs
+/// after each stage. A quench, so the packing stays about as disordered as it was
+/// (docs/tuning.md). Returns the number of disks added; throws InvalidInput in a planar
+/// domain or with a sizing.
+std::size_t squeeze_inject(Packing& packing, Rng& rng, std::size_t max_added,
+                           const std::function<void()>& after_step = {});
 
 /// Crystal-growth ejection (3.2): as crystal_inject, with the lattice spacing sqrt(3) r
 /// of the sparsest covering: a mobile disk covering a site moves there, the disks it

@@ -156,18 +156,21 @@ void add_tune_command(CLI::App& app, Action& action) {
   fraction->excludes(rho);
   cmd->add_option(
          "--method", args->method,
-         "auto: denser by void, then repeller, then grain injection (switching at eta "
-         "0.70 and 0.78, or when a phase stalls; one crystal where the grains stall, near "
-         "0.86; to eta 0.84 and beyond grains from the start; on a curved surface void, then "
-         "crystal injection from eta 0.75), sparser by sifting, then "
+         "auto: denser in the periodic box by squeeze, then grain injection (switching at "
+         "eta 0.82), in a planar domain by void, then repeller, then grain injection "
+         "(switching at 0.70 and 0.78, or when a phase stalls); one crystal where the grains "
+         "stall, near 0.86; to eta 0.84 and beyond grains from the start; on a curved surface "
+         "void, then crystal injection from eta 0.75; sparser by sifting, then "
          "attractor, then "
          "crystal ejection, then attractor ejection over three rings of neighbours (on a "
          "surface before the crystal); or one phase alone: void, repeller, crystal (one "
-         "ordered crystal), grains (crystals from many nuclei at random orientations), angle "
+         "ordered crystal), grains (crystals from many nuclei at random orientations), squeeze "
+         "(the periodic box: new disks at the largest holes, conflicts pushed apart, voids "
+         "refilled; random to eta 0.82), angle "
          "(repel from the circumcenters of obtuse Delaunay triangles), sift, attractor (one "
          "ring, then three), crystal-eject")
-      ->check(CLI::IsMember({"auto", "void", "repeller", "crystal", "grains", "angle", "sift",
-                             "attractor", "crystal-eject"}))
+      ->check(CLI::IsMember({"auto", "void", "repeller", "crystal", "grains", "squeeze", "angle",
+                             "sift", "attractor", "crystal-eject"}))
       ->capture_default_str();
   reads_file(cmd->add_option("--input,-i", args->input,
                              "Start from this CSV (x,y,r, or x,y,z,r on a surface; a conflict-free maximal "

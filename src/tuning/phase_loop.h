@@ -150,12 +150,16 @@ inline void check_direction(Method method, bool eject) {
 /// injection straight to the crystal (which barely grows in the dense random packing
 /// repeller injection leaves, and the repeller phase is the slow one), and ejection runs
 /// the wide attractor before the crystal (after it, the crystal removes nothing; before
-/// it, its frozen lattice leaves the wide attractor less room).
+/// it, its frozen lattice leaves the wide attractor less room). `squeeze` is null where
+/// squeeze injection is not defined (all but the periodic box); where it is, it replaces
+/// void and repeller injection in the automatic schedule.
 template <class P>
 std::vector<PhasePlan<P>> plan_for(const TuneOptions& o, bool eject, bool one_radius,
                                    std::size_t (*angle)(P&, Rng&, std::size_t,
                                                         const std::function<void()>&),
-                                   bool curved = false, double target_eta = 0) {
+                                   bool curved = false, double target_eta = 0,
+                                   std::size_t (*squeeze)(P&, Rng&, std::size_t,
+                                                          const std::function<void()>&) = nullptr) {
   using Plan = PhasePlan<P>;
   const Plan void_phase{Phase::void_injection, &void_inject, nullptr, o.void_until};
   const Plan repeller_phase{
@@ -172,6 +176,7 @@ std::vector<PhasePlan<P>> plan_for(const TuneOptions& o, bool eject, bool one_ra
   Plan crystal_after_grains = crystal_phase;
   crystal_after_grains.thaw = true;
   const Plan angle_phase{Phase::angle_injection, nullptr, angle, 2.0};
+  const Plan squeeze_phase{Phase::squeeze_injection, nullptr, squeeze, o.squeeze_until};
   const Plan sift_phase{Phase::sift_ejection, &sift_eject, nullptr, 2.0};
   const Plan attractor_phase{Phase::attractor_ejection, &attractor_eject, nullptr, 2.0};
   // Three rings of neighbours where one ring has stalled, the crystal (if it ran
@@ -217,12 +222,23 @@ std::vector<PhasePlan<P>> plan_for(const TuneOptions& o, bool eject, bool one_ra
       if (!one_radius) return {void_phase, finish};
       if (curved) return {quick_void_phase, crystal_phase, finish};
       if (target_eta >= o.grains_from_sample) return {grain_phase, crystal_after_grains, finish};
+      if (squeeze) return {squeeze_phase, grain_phase, crystal_after_grains, finish};
       return {void_phase, repeller_phase, grain_phase, crystal_after_grains, finish};
     case Method::void_injection: return alone(void_phase);
     case Method::repeller_injection: return alone(repeller_phase);
     case Method::crystal_injection: return {crystal_phase, finish};
     case Method::grain_injection:
       return {grain_phase, crystal_after_grains, finish};
+    case Method::squeeze_injection: {
+      if (!squeeze) {
+        throw InvalidInput(
+            "tune: squeeze injection moves disks through the seams of a periodic box "
+            "with one radius; here use void or repeller injection (or automatic)");
+      }
+      Plan alone_squeeze = squeeze_phase;
+      alone_squeeze.until = 2.0;
+      return {alone_squeeze, finish};  // the repeller adds what a stage left out, if any
+    }
     case Method::angle_injection:
       if (!angle) {
         throw InvalidInput("tune: angle injection triangulates the periodic box; here use void, "
@@ -318,7 +334,11 @@ TuneResult run_phases(P& packing, const P& entry, double unit, std::size_t goal,
     const std::size_t size_before = packing.size();
     if (plan.sweep) {
       std::size_t steps = 0;
-      plan.sweep(packing, rng, missing(), [&] {
+      // What is missing to the phase's goal (squeeze injection adds all of it at once).
+      const std::size_t to_phase_goal =
+          eject ? missing()
+                : std::min(missing(), phase_goal > size_before ? phase_goal - size_before : 0);
+      plan.sweep(packing, rng, to_phase_goal, [&] {
         if (after_op) after_op(packing);
         if (++steps % 256 == 0) report(plan.phase);
       });

@@ -44,8 +44,10 @@ TuneResult tune_in(Packing& packing, const Packing& entry, double area, const Ta
   const std::size_t goal = target_count(target, packing, area);
   const bool eject = goal < packing.size();
   const double unit = density_unit(packing, area);
+  const bool box_one_radius = !packing.domain() && packing.sizing() == nullptr;
   auto plans = detail::plan_for<Packing>(options, eject, packing.sizing() == nullptr, &angle_inject,
-                                         false, static_cast<double>(goal) / unit);
+                                         false, static_cast<double>(goal) / unit,
+                                         box_one_radius ? &squeeze_inject : nullptr);
   if (packing.domain() && options.method == Method::automatic && mostly_boundary(packing)) {
     plans.push_back({eject ? Phase::boundary_ejection : Phase::boundary_injection, nullptr,
                      eject ? &boundary_sweep<-1> : &boundary_sweep<1>, 2.0});

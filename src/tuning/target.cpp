@@ -77,6 +77,8 @@ std::string to_string(Phase phase) {
     case Phase::crystal_injection: return "crystal injection";
     case Phase::grain_injection:
       return "grain injection";
+    case Phase::squeeze_injection:
+      return "squeeze injection";
     case Phase::angle_injection: return "angle injection";
     case Phase::sift_ejection: return "sifted-disks ejection";
     case Phase::attractor_ejection: return "attractor ejection";
@@ -95,6 +97,7 @@ Method method_named(const std::string& name) {
       {"repeller", Method::repeller_injection},
       {"crystal", Method::crystal_injection},
       {"grains", Method::grain_injection},
+      {"squeeze", Method::squeeze_injection},
       {"angle", Method::angle_injection},
       {"sift", Method::sift_ejection},
       {"attractor", Method::attractor_ejection},
@@ -103,7 +106,8 @@ Method method_named(const std::string& name) {
     if (name == known) return method;
   throw InvalidInput(
       "method '" + name +
-      "': give auto, void, repeller, crystal, grains, angle, sift, attractor or crystal-eject");
+      "': give auto, void, repeller, crystal, grains, squeeze, angle, sift, attractor or "
+      "crystal-eject");
 }
 
 }  // namespace disktune

@@ -1,0 +1,140 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Squeeze injection, checked by the independent oracle after every stage: conflict-free
+// and maximal, the exact count, in square and oblong boxes, and only in the periodic box.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "disktune/density.h"
+#include "disktune/errors.h"
+#include "disktune/planar_domain.h"
+#include "disktune/sampling.h"
+#include "disktune/tuning.h"
+#include "test_util.h"
+
+namespace disktune {
+namespace {
+
+::testing::AssertionResult valid(const PeriodicBox& box, const Packing& p, std::uint64_t seed) {
+  const auto rep =
+      oracle::check_all(test::box_of(box), p.max_radius(), test::centers_of(p), 1e-6, 3000, seed);
+  if (rep.conflict_free() && rep.maximal()) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << rep.summary();
+}
+
+// Stages of every size, from one disk to the whole way to eta 0.80 at once, each checked
+// by the oracle; the count is exactly what was asked after each call.
+TEST(Squeeze, EveryStageLeavesAValidPackingWithTheCountAsked) {
+  const struct { double w, h, r; } boxes[] = {{1, 1, 0.03}, {1.3, 0.7, 0.025}, {0.4, 0.4, 0.05}};
+  for (const auto& [w, h, r] : boxes) {
+    for (const std::uint64_t seed : {1, 2, 3}) {
+      SCOPED_TRACE("box " + std::to_string(w) + " x " + std::to_string(h) + " seed " +
+                   std::to_string(seed));
+      const PeriodicBox box(w, h);
+      Rng rng(seed);
+      Packing p = sample_mps(box, r, rng);
+      const std::size_t goal = count_for_area_fraction(0.80, r, box.area());
+      std::size_t stages = 0;
+      const auto check = [&] {
+        ++stages;
+        ASSERT_TRUE(valid(box, p, seed * 1000 + stages));
+      };
+      for (const std::size_t step : {std::size_t{1}, std::size_t{7}, goal}) {
+        const std::size_t before = p.size(), ask = std::min(step, goal - before);
+        const std::size_t added = squeeze_inject(p, rng, ask, check);
+        ASSERT_EQ(added, ask);
+        ASSERT_EQ(p.size(), before + ask);
+        ASSERT_TRUE(valid(box, p, seed));
+      }
+      EXPECT_EQ(p.size(), goal);
+      EXPECT_GE(stages, 3u);
+    }
+  }
+}
+
+// From a sparse packing (ejected to eta 0.35, every disk alone covering part of the box),
+// the pushes open voids that the stage must refill: each stage checked by the oracle. The
+// refill can pass a small count asked (then the stage is tried smaller, down to none).
+TEST(Squeeze, VoidsThePushesOpenAreRefilled) {
+  const PeriodicBox box;
+  for (const std::uint64_t seed : {1, 2, 3, 4}) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    Rng rng(seed);
+    Packing p = sample_mps(box, 0.04, rng);
+    ASSERT_TRUE(tune(p, box, Target::area_fraction(0.35), rng).reached);
+    std::size_t stages = 0, total = 0;
+    for (const std::size_t step :
+         {std::size_t{1}, std::size_t{2}, std::size_t{5}, std::size_t{20}, std::size_t{60}}) {
+      const std::size_t before = p.size();
+      const std::size_t added =
+          squeeze_inject(p, rng, step, [&] { ASSERT_TRUE(valid(box, p, seed * 100 + ++stages)); });
+      ASSERT_LE(added, step);
+      ASSERT_EQ(p.size(), before + added);
+      total += added;
+    }
+    EXPECT_GT(stages, 0u);
+    EXPECT_GT(total, 0u);
+    EXPECT_TRUE(valid(box, p, seed));
+    std::printf("[figures] squeeze from eta 0.35: seed %d, %zu stages, %zu disks added\n",
+                static_cast<int>(seed), stages, total);
+  }
+}
+
+// The automatic schedule in the box: squeeze injection to the target, or to
+// squeeze_until and then the grains, every target reached exactly and valid.
+TEST(Squeeze, TheAutomaticScheduleSqueezesThenGrowsGrains) {
+  const PeriodicBox box;
+  for (const double eta : {0.60, 0.75, 0.81, 0.83}) {
+    SCOPED_TRACE("eta " + std::to_string(eta));
+    Rng rng(5);
+    Packing p = sample_mps(box, 0.02, rng);
+    std::vector<Phase> seen;
+    TuneOptions o;
+    o.on_progress = [&](const Progress& pr) {
+      if (seen.empty() || seen.back() != pr.phase) seen.push_back(pr.phase);
+      return true;
+    };
+    const TuneResult res = tune(p, box, Target::area_fraction(eta), rng, o);
+    ASSERT_TRUE(res.reached);
+    EXPECT_TRUE(valid(box, p, 7));
+    ASSERT_FALSE(seen.empty());
+    EXPECT_EQ(seen.front(), Phase::squeeze_injection);
+    EXPECT_EQ(std::count(seen.begin(), seen.end(), Phase::void_injection), 0);
+    const bool grains = std::find(seen.begin(), seen.end(), Phase::grain_injection) != seen.end();
+    EXPECT_EQ(grains, eta > o.squeeze_until);
+  }
+}
+
+// A box too narrow for the pushes' cells adds nothing (the phases after it go on); a
+// planar domain or a sizing is refused with a message naming what to use instead.
+TEST(Squeeze, OnlyInAPeriodicBoxWithOneRadius) {
+  {
+    const PeriodicBox box(0.1, 1);
+    Rng rng(1);
+    Packing p = sample_mps(box, 0.04, rng);
+    const std::size_t before = p.size();
+    EXPECT_EQ(squeeze_inject(p, rng, 3), 0u);
+    EXPECT_EQ(p.size(), before);
+  }
+  const auto domain =
+      std::make_shared<const PlanarDomain>(std::vector<Vec2>{{0, 0}, {1, 0}, {1, 1}, {0, 1}});
+  Rng rng(1);
+  Packing planar = sample_mps(domain, 0.05, rng);
+  try {
+    squeeze_inject(planar, rng, 5);
+    FAIL() << "no error";
+  } catch (const InvalidInput& e) {
+    EXPECT_NE(std::string(e.what()).find("void or repeller"), std::string::npos) << e.what();
+  }
+  TuneOptions o;
+  o.method = Method::squeeze_injection;
+  EXPECT_THROW(tune(planar, *domain, Target::area_fraction(0.7), rng, o), InvalidInput);
+}
+
+}  // namespace
+}  // namespace disktune
