@@ -44,6 +44,7 @@ TEST(Squeeze, EveryStageLeavesAValidPackingWithTheCountAsked) {
         ++stages;
         ASSERT_TRUE(valid(box, p, seed * 1000 + stages));
       };
+      const std::size_t start = p.size();
       for (const std::size_t step : {std::size_t{1}, std::size_t{7}, goal}) {
         const std::size_t before = p.size(), ask = std::min(step, goal - before);
         const std::size_t added = squeeze_inject(p, rng, ask, check);
@@ -52,6 +53,7 @@ TEST(Squeeze, EveryStageLeavesAValidPackingWithTheCountAsked) {
         ASSERT_TRUE(valid(box, p, seed));
       }
       EXPECT_EQ(p.size(), goal);
+      EXPECT_GT(goal, start);
       EXPECT_GE(stages, 3u);
     }
   }

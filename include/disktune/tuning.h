@@ -211,16 +211,18 @@ std::size_t grain_inject(Packing& packing, Rng& rng, std::size_t max_added,
                          const std::function<void()>& after_step = {},
                          std::size_t disks_per_grain = kDisksPerGrain);
 
-/// Squeeze injection (beyond the paper; the periodic box, one radius): in stages, new
-/// disks at the largest holes of the Delaunay triangulation (the largest circumcircles,
-/// no two new centers closer than r), then every conflicting pair pushed apart until
-/// none is left, then the voids the moves opened refilled; each stage adds max_added
-/// disks at once (fewer where it would not settle, or its refill would pass max_added:
-/// then it is taken back and tried smaller). A stage moves many disks: the packing is
-/// conflict-free and maximal before and after it, not in between. `after_step` runs
-/// after each stage. A quench, so the packing stays about as disordered as it was
-/// (docs/tuning.md). Returns the number of disks added; throws InvalidInput in a planar
-/// domain or with a sizing.
+/// Squeeze injection (beyond the paper; the periodic box, one radius): one stage puts
+/// max_added new disks at once at the largest holes of the Delaunay triangulation (the
+/// largest circumcircles, no two new centers closer than r), pushes every conflicting
+/// pair apart until none is left, then refills the voids the moves opened; where the
+/// refill passes max_added, as many disks are ejected again (attractor ejection, then
+/// sifting, of the refill's disks first). A stage that does not settle, or whose count
+/// cannot be brought back, is taken back and tried smaller. The stage moves many disks:
+/// the packing is conflict-free and maximal before and after it, not in between.
+/// `after_step` runs once, after the stage. A quench, so the packing stays about as
+/// disordered as it was (docs/tuning.md). Returns the number of disks added (max_added,
+/// or fewer where the packing jams); throws InvalidInput in a planar domain or with a
+/// sizing.
 std::size_t squeeze_inject(Packing& packing, Rng& rng, std::size_t max_added,
                            const std::function<void()>& after_step = {});
 

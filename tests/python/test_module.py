@@ -228,9 +228,9 @@ def test_progress_is_called_and_can_cancel():
 
     t = disktune.tune(s, area_fraction=0.7, progress=watch)
     assert seen and {"count", "area_fraction", "phase", "phase_goal"} <= set(seen[0])
-    # Void injection hands over at area fraction 0.70, the target here: its goal is the
-    # target's count, where tuning ends.
-    assert [p["phase_goal"] for p in seen if p["phase"] == "void injection"] == [len(t)] * len(seen)
+    # Squeeze injection (the box) hands over at area fraction 0.82, past the target here:
+    # its goal is the target's count, where tuning ends.
+    assert [p["phase_goal"] for p in seen if p["phase"] == "squeeze injection"] == [len(t)] * len(seen)
     with pytest.raises(disktune.Cancelled):
         disktune.tune(s, area_fraction=0.7, progress=lambda p: False)
 
