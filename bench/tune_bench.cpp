@@ -5,10 +5,12 @@
 // triangulation of as many points, timed in the same run. The phases' path depends on
 // the target only through TuneOptions::grains_from_sample (the automatic schedule's
 // injection starts with grains at and past it) and otherwise only where it stops, so one
-// run to the largest fraction on each side of that threshold times them all.
+// run to the largest fraction on each side of that threshold times them all; but squeeze
+// injection (the automatic schedule's first phase in the box) goes to its target in one
+// stage, so below the threshold each fraction gets a run of its own.
 //
 //   disktune-tune-bench [--radius R] [--method
-//   auto|void|repeller|crystal|grains|angle|sift|attractor]
+//   auto|void|repeller|crystal|grains|squeeze|angle|sift|attractor]
 //                       [ETA ...]   (ascending for injection, descending for ejection)
 #include <chrono>
 #include <cstdio>
@@ -57,10 +59,12 @@ int main(int argc, char** argv) {
 
   TuneOptions options;
   options.method = method;
-  // The fractions one run times: those on one side of grains_from_sample.
+  // The fractions one run times (above).
   const auto same_path = [&](double a, double b) {
-    return eject || method != Method::automatic ||
-           (a >= options.grains_from_sample) == (b >= options.grains_from_sample);
+    if (eject) return true;
+    if (method == Method::squeeze_injection) return false;
+    if (method != Method::automatic) return true;
+    return a >= options.grains_from_sample && b >= options.grains_from_sample;
   };
   const Packing mps = packing;
   for (std::size_t first = 0; first < etas.size();) {

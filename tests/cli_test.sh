@@ -134,6 +134,9 @@ expect tune-input 0 "-> [0-9]+ disks .*reached.*eta = 0\.6[0-9]+" -- "$bin" tune
 expect tune-crystal 0 "eta = 0\.85[0-9]*, " -- "$bin" tune --radius 0.03 --target-fraction 0.85 --method crystal -o /dev/null
 expect tune-grains 0 "eta = 0\.85[0-9]*, .*phase grain injection" -- "$bin" tune --radius 0.02 --target-fraction 0.85 --method grains -o /dev/null
 expect tune-grains-past 0 "eta = 0\.88[0-9]*, .*phase crystal injection" -- "$bin" tune --radius 0.02 --target-fraction 0.88 -o /dev/null
+expect tune-squeeze 0 "^tune: [0-9]+ -> [0-9]+ disks \(target [0-9]+, reached\), eta = 0\.(79|80)[0-9]*, .*phase squeeze injection" -- "$bin" tune --radius 0.02 --target-fraction 0.8 --method squeeze -o sq.csv
+expect tune-squeeze-report 0 "maximal, conflict-free" -- "$bin" report sq.csv --radius 0.02
+expect tune-squeeze-domain 2 "squeeze injection moves disks through the seams of a periodic box; in a planar domain use void, repeller or crystal injection" -- "$bin" tune --domain "$data/domains/notch_and_holes.poly" --radius 0.03 --target-fraction 0.7 --method squeeze -o /dev/null
 expect tune-not-reached 4 "NOT reached" -- "$bin" tune --radius 0.03 --target-fraction 0.9 --method void --output nr.csv
 [ -s nr.csv ] && pass=$((pass + 1)) || { echo "FAIL not-reached writes the closest packing"; fails=$((fails + 1)); }
 # --relax: the count kept, the packing still conflict-free and maximal (report's own check).

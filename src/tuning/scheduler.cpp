@@ -74,6 +74,11 @@ TuneResult tune(Packing& packing, const PlanarDomain& domain, const Target& targ
   if (packing.domain() != &domain) {
     throw InvalidInput("tune: the packing is not restricted to this domain (Packing::set_domain)");
   }
+  if (options.method == Method::squeeze_injection) {
+    throw InvalidInput(
+        "tune: squeeze injection moves disks through the seams of a periodic box; "
+        "in a planar domain use void, repeller or crystal injection");
+  }
   if (options.method == Method::angle_injection) {
     throw InvalidInput("tune: angle injection triangulates the periodic box; in a planar domain "
                        "use void, repeller or crystal injection");
