@@ -114,7 +114,7 @@ struct TuneOptions {
   double repeller_until = 0.78;
   /// In the periodic box with one radius, squeeze injection replaces void and repeller
   /// injection and hands over to the grains here: to eta 0.80 it leaves 12 % of the
-  /// disks locally hexagonal where the grains leave half, in half the time; past 0.82 it
+  /// disks locally hexagonal where the grains leave half, in a third of the time; past 0.82 it
   /// slows and orders the packing as it nears jamming (docs/tuning.md).
   double squeeze_until = 0.82;
   double surface_void_until = 0.75;
