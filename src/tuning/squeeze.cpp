@@ -9,7 +9,6 @@
 
 #include "disktune/errors.h"
 #include "disktune/mesh.h"
-#include "disktune/tolerance.h"
 #include "disktune/tuning.h"
 #include "undo_log.h"
 #include "void_repair.h"
@@ -210,8 +209,9 @@ long squeeze_stage(Packing& packing, std::size_t count, Rng& rng, std::vector<Di
   x.reserve(ids.size());
   for (const DiskId id : ids) x.push_back(packing.center(id) - frame.origin);
   Quench quench(frame, r, std::move(x));
-  // About five times what settling takes at eta 0.80 from the sample (740 pushes a new
-  // disk), so that a stage past where the packing jams gives up at a bounded cost.
+  // Several times what settling takes at eta 0.80 from the sample (740 pushes a new disk
+  // at gain 1.6, r = 0.01), so that a stage past where the packing jams gives up at a
+  // bounded cost.
   const long budget = 4000 * static_cast<long>(count) + 100 * static_cast<long>(ids.size());
   if (!quench.run(std::move(active), budget)) return -1;
   const std::vector<Vec2> ended = quench.positions();
