@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "disktune/errors.h"
+#include "disktune/geometry.h"
 #include "disktune/mesh.h"
 #include "disktune/tuning.h"
 #include "undo_log.h"
@@ -169,13 +170,10 @@ std::vector<Vec2> holes_largest_first(const Packing& packing) {
   std::vector<std::pair<double, Vec2>> holes;
   holes.reserve(mesh.triangles.size());
   for (const auto& t : mesh.triangles) {
-    const Vec2 a = mesh.vertices[t[0]], b = mesh.vertices[t[1]] - a, c = mesh.vertices[t[2]] - a;
-    const double twice_area = 2 * (b.x * c.y - b.y * c.x);
-    if (!(twice_area > 0))
-      continue;  // degenerate (never in a Delaunay triangulation of distinct centers)
-    const Vec2 u{(c.y * squared_norm(b) - b.y * squared_norm(c)) / twice_area,
-                 (b.x * squared_norm(c) - c.x * squared_norm(b)) / twice_area};
-    holes.push_back({squared_norm(u), packing.frame().wrap(a + u)});
+    const Vec2 a = mesh.vertices[t[0]], b = mesh.vertices[t[1]], c = mesh.vertices[t[2]];
+    if (!(cross(b - a, c - a) > 0)) continue;  // degenerate (never with distinct centers)
+    const Vec2 o = circumcenter(a, b, c);
+    holes.push_back({squared_norm(o - a), packing.frame().wrap(o)});
   }
   std::stable_sort(holes.begin(), holes.end(),
                    [](const auto& p, const auto& q) { return p.first > q.first; });
@@ -221,19 +219,17 @@ long squeeze_stage(Packing& packing, std::size_t count, Rng& rng, std::vector<Di
   }
   // Only what a moved disk covered before can be uncovered now (the packing was maximal,
   // and new disks only add cover): refill each such disk's old place.
+  const std::size_t settled = packing.size();
   detail::UndoLog log(packing);
-  refilled.clear();
   for (std::size_t i = 0; i < old_centers.size(); ++i) {
-    if (old_centers[i] == packing.center(ids[i])) continue;
-    const std::size_t size = packing.size();
-    detail::repair_void(log, packing, old_centers[i], r, rng, static_cast<std::size_t>(-2));
-    if (packing.size() > size) refilled.push_back(kNoDisk);  // counted; ids found below
+    if (!(old_centers[i] == packing.center(ids[i])))
+      detail::repair_void(log, packing, old_centers[i], r, rng, static_cast<std::size_t>(-2));
   }
   log.commit();
-  if (!refilled.empty()) {  // the disks neither there before nor put at a hole
+  refilled.clear();
+  if (packing.size() > settled) {  // the disks neither there before nor put at a hole
     std::vector<char> known(packing.id_bound(), 0);
     for (const DiskId id : ids) known[id] = 1;
-    refilled.clear();
     for (const DiskId id : packing.ids())
       if (!known[id]) refilled.push_back(id);
   }
