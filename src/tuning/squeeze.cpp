@@ -1,16 +1,19 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Squeeze injection (beyond the paper): new disks at the largest holes of the periodic
-// Delaunay triangulation, the conflicts they make pushed apart pair by pair until none
-// is left, then the voids the moves opened refilled. A quench, not a slow anneal: the
-// packing stays as random as the sample it starts from (docs/tuning.md).
+// Delaunay triangulation, the conflicts they make relaxed as soft disks and then pushed
+// apart pair by pair until none is left, then the voids the moves opened refilled. A
+// quench, not a slow anneal: the packing stays as random as the sample it starts from
+// (docs/tuning.md).
 #include <algorithm>
 #include <cmath>
 #include <vector>
 
+#include "../geometry/threads.h"
 #include "disktune/errors.h"
 #include "disktune/geometry.h"
 #include "disktune/mesh.h"
 #include "disktune/tuning.h"
+#include "soft_disks.h"
 #include "undo_log.h"
 #include "void_repair.h"
 
@@ -24,6 +27,12 @@ namespace {
 // (docs/tuning.md).
 constexpr double kPushTo = 1 + 1e-4;
 constexpr double kGain = 1.7;
+// Soft disks for stages of at least 1 / kSoftShare of the packing, until every pair is
+// kSoftStop r apart (then the pushes take over) or for at most kSoftSteps steps (~260 at
+// eta 0.80 from the sample).
+constexpr std::size_t kSoftShare = 16;
+constexpr double kSoftStop = 0.997;
+constexpr long kSoftSteps = 2000;
 
 // The disks as plain arrays, relative to the frame's origin, stored cell by cell (cells of
 // side at least r + kSlack r, so a cell's disks are contiguous and a sweep in index order
@@ -206,6 +215,17 @@ long squeeze_stage(Packing& packing, std::size_t count, Rng& rng, std::vector<Di
   std::vector<Vec2> x;
   x.reserve(ids.size());
   for (const DiskId id : ids) x.push_back(packing.center(id) - frame.origin);
+  // Many new disks push the whole packing: soft disks (every disk moving at once, on
+  // every core) bring it near a valid one in a few hundred steps, the pair pushes settle
+  // the last gaps, which they do faster (soft_disks.h). A few new disks are pushed apart
+  // by the pair pushes alone, which touch only the disks near them.
+  std::vector<int> everyone;
+  if (count * kSoftShare >= ids.size()) {
+    detail::relax_soft_disks(frame, r, x, kSoftStop * r, kSoftSteps, detail::thread_count(0));
+    everyone.resize(x.size());
+    for (std::size_t i = 0; i < x.size(); ++i) everyone[i] = static_cast<int>(i);
+    active.swap(everyone);
+  }
   Quench quench(frame, r, std::move(x));
   // Several times what settling takes at eta 0.80 from the sample (740 pushes a new disk
   // at gain 1.6, r = 0.01), so that a stage past where the packing jams gives up at a
@@ -266,7 +286,10 @@ std::size_t squeeze_inject(Packing& packing, Rng& rng, std::size_t max_added,
         "squeeze injection moves disks through the seams of a periodic box with one "
         "radius; in a planar domain or with a sizing use void or repeller injection");
   }
-  if (!Quench::fits(packing.frame(), packing.max_radius())) return 0;
+  if (!Quench::fits(packing.frame(), packing.max_radius()) ||
+      !detail::soft_disks_fit(packing.frame(), packing.max_radius())) {
+    return 0;
+  }
   std::vector<DiskId> refilled;
   for (std::size_t want = max_added; want > 0;) {
     const Packing before = packing;
