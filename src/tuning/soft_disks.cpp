@@ -11,8 +11,7 @@ namespace {
 
 // The springs rest at r (1 + kMargin), so that pairs end a little past r without a long
 // wait for the last gaps to open. A larger margin ends sooner but lets the packing order
-// itself: at eta 0.80, r = 0.003, 12.6 % of the disks locally hexagonal with 1e-3, 14.1 %
-// with 3e-3, 20.5 % with 1e-2 (docs/tuning.md).
+// itself (docs/tuning.md, "Soft disks first").
 constexpr double kMargin = 1e-3;
 // The pair lists reach rest + kSkin r; they are made again once some disk has moved
 // kSkin r / 2 since (until then no pair closer than rest is missing from them).
@@ -24,11 +23,13 @@ constexpr double kAlphaStart = 0.1, kAlphaShrink = 0.99;
 constexpr int kDelay = 5;
 
 // The disks stored cell by cell (cells at least rest + skin wide, rows of cells in
-// strips), each with the list of its neighbours later in that order (each pair once).
-// A strip adds each pair's force to both disks, so it writes into the first row of the
-// strip after it (and strip 0 into the last row of the last): the even strips run
-// together, then the odd ones, each strip in its own order; so every sum is made in the
-// same order on any number of threads.
+// strips), each with the list of its neighbours after it in its own cell and in the cell
+// to its right and the three above (so each pair once). A pair closer than rest pushes
+// both disks apart by (rest^2 - d^2) / (2 rest^2) of their distance d: the spring's push
+// near contact, without a square root. A strip adds each pair's push to both disks, so it
+// writes into the first row of the strip above it (the last strip into strip 0's): the
+// even strips run together, then the odd ones, each strip in its own order; so every sum
+// is made in the same order on any number of threads.
 class SoftDisks {
  public:
   SoftDisks(const Frame& frame, double r, std::vector<Vec2> x, unsigned threads)
@@ -45,6 +46,7 @@ class SoftDisks {
         f_(x_.size(), Vec2{}),
         given_(x_.size()),
         lists_(strips_),
+        listed_(strips_),
         sums_(strips_) {
     for (std::size_t i = 0; i < given_.size(); ++i) given_[i] = static_cast<int>(i);
   }
@@ -138,11 +140,14 @@ class SoftDisks {
                  [&](std::size_t s, unsigned) { job(static_cast<int>(s)); });
   }
 
-  // Sorts the disks by cell (counting sort) and makes each strip's lists.
+  // Sorts the disks by cell (counting sort) and makes each strip's lists. The arrays
+  // sorted into are kept from one build to the next: fresh memory costs more to touch
+  // than the sort (at 1.46 M disks, 140 ms a build, against some 40).
   void build() {
     const std::size_t n = x_.size();
     start_.assign(static_cast<std::size_t>(nx_) * ny_ + 1, 0);
-    std::vector<int> cell(n);
+    std::vector<int>& cell = cell_;
+    cell.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
       x_[i] = {wrap(x_[i].x, w_), wrap(x_[i].y, h_)};
       const int cx = std::min(nx_ - 1, static_cast<int>(x_[i].x / w_ * nx_));
@@ -151,33 +156,49 @@ class SoftDisks {
       ++start_[cell[i] + 1];
     }
     for (std::size_t c = 1; c < start_.size(); ++c) start_[c] += start_[c - 1];
-    std::vector<int> fill(start_.begin(), start_.end() - 1), given(n);
-    std::vector<Vec2> x(n), v(n);
+    fill_.assign(start_.begin(), start_.end() - 1);
+    sorted_x_.resize(n), sorted_v_.resize(n), sorted_given_.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
-      const int k = fill[cell[i]]++;
-      x[k] = x_[i], v[k] = v_[i], given[k] = given_[i];
+      const int k = fill_[cell[i]]++;
+      sorted_x_[k] = x_[i], sorted_v_[k] = v_[i], sorted_given_[k] = given_[i];
     }
-    x_.swap(x), v_.swap(v), given_.swap(given);
+    x_.swap(sorted_x_), v_.swap(sorted_v_), given_.swap(sorted_given_);
     first_.resize(n + 1);
     const double reach2 = (rest_ + skin_) * (rest_ + skin_);
     each_strip_in_parallel([&](int s) {
       std::vector<int>& list = lists_[s];
-      list.clear();
+      int used = 0;
       for (int cy = first_row(s); cy < first_row(s + 1); ++cy) {
+        const int up = cy + 1 < ny_ ? cy + 1 : 0;
         for (int cx = 0; cx < nx_; ++cx) {
-          for (int i = start_[cy * nx_ + cx]; i < start_[cy * nx_ + cx + 1]; ++i) {
-            first_[i] = static_cast<int>(list.size());
-            for (int dy = -1; dy <= 1; ++dy) {
-              const int y = (cy + dy + ny_) % ny_;
-              for (int dx = -1; dx <= 1; ++dx) {
-                const int c = y * nx_ + (cx + dx + nx_) % nx_;
-                for (int j = std::max(start_[c], i + 1); j < start_[c + 1]; ++j)
-                  if (squared_norm(apart(x_[i], x_[j])) < reach2) list.push_back(j);
+          const int left = cx > 0 ? cx - 1 : nx_ - 1, right = cx + 1 < nx_ ? cx + 1 : 0;
+          // The cell's own disks, then half the cells around it: each pair of cells once.
+          const int cells[] = {cy * nx_ + right, up * nx_ + left, up * nx_ + cx, up * nx_ + right};
+          const int c = cy * nx_ + cx;
+          int around = start_[c + 1] - start_[c];
+          for (const int other : cells) around += start_[other + 1] - start_[other];
+          for (int i = start_[c]; i < start_[c + 1]; ++i) {
+            first_[i] = used;
+            if (list.size() < static_cast<std::size_t>(used + around))
+              list.resize(2 * (used + around));
+            int* out = list.data();
+            const Vec2 xi = x_[i];
+            // Every candidate written, kept by moving on only when within reach: no branch
+            // to mispredict (about half are kept).
+            for (int j = i + 1; j < start_[c + 1]; ++j) {
+              out[used] = j;
+              used += squared_norm(apart(xi, x_[j])) < reach2;
+            }
+            for (const int other : cells) {
+              for (int j = start_[other]; j < start_[other + 1]; ++j) {
+                out[used] = j;
+                used += squared_norm(apart(xi, x_[j])) < reach2;
               }
             }
           }
         }
       }
+      listed_[s] = used;
     });
   }
 
@@ -196,18 +217,19 @@ class SoftDisks {
     return u;
   }
 
-  // Every disk's force from the springs now; returns the smallest distance of a pair.
+  // Every disk's push from the springs now; returns the smallest distance of a pair (rest
+  // when none is closer).
   double closest_after_forces() {
     std::vector<double> closest2(strips_);
-    const double rest2 = rest_ * rest_;
+    const double rest2 = rest_ * rest_, stiffness = 0.5 / rest2;
     auto strip = [&](int s) {
-      double m = rest2 + 4 * skin_ * skin_;  // beyond any listed pair
+      double m = rest2;  // rest when no pair is closer
       const int* list = lists_[s].data();
       const Vec2* x = x_.data();
       Vec2* f = f_.data();
       const int begin = first_of(s), end = first_of(s + 1);
       for (int i = begin; i < end; ++i) {
-        const int last = i + 1 < end ? first_[i + 1] : static_cast<int>(lists_[s].size());
+        const int last = i + 1 < end ? first_[i + 1] : listed_[s];
         const Vec2 xi = x[i];
         Vec2 fi{};
         for (int k = first_[i]; k < last; ++k) {
@@ -215,8 +237,10 @@ class SoftDisks {
           const Vec2 u = apart(xi, x[j]);
           const double d2 = squared_norm(u);
           m = std::min(m, d2);
-          if (d2 >= rest2 || d2 == 0) continue;  // coinciding centers: no direction
-          const Vec2 push = u * (rest_ / std::sqrt(d2) - 1);
+          // max(rest2 - d2, 0) without a branch: about half the listed pairs overlap,
+          // at random, and a branch mispredicted costs more than the arithmetic.
+          const double gap = rest2 - d2, over = 0.5 * (gap + std::fabs(gap));
+          const Vec2 push = u * (over * stiffness);
           fi -= push;
           f[j] += push;
         }
@@ -238,11 +262,13 @@ class SoftDisks {
   double w_, h_, rest_, skin_;
   int nx_, ny_, strips_;
   unsigned threads_;
-  std::vector<Vec2> x_, v_, f_;
+  std::vector<Vec2> x_, v_, f_, sorted_x_, sorted_v_;
+  std::vector<int> cell_, fill_, sorted_given_;  // scratch for the sort
   std::vector<int> given_;               // the index each disk was given by
   std::vector<int> start_;               // each cell's first disk
   std::vector<int> first_;               // each disk's first entry in its strip's list
   std::vector<std::vector<int>> lists_;  // each strip's neighbour lists, one after another
+  std::vector<int> listed_;              // how much of each strip's list is used
   std::vector<Sums> sums_;
 };
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Disks in a periodic box pushed apart as soft disks (internal): every pair closer than
-// r repels as a spring, and the positions follow FIRE, the fast inertial relaxation of
+// r repels like a spring, and the positions follow FIRE, the fast inertial relaxation of
 // Bitzek, Koskinen, Gähler, Moseler and Gumbsch (2006), with the half step back on a
 // restart of its 2.0 version (Guénolé et al., 2020). Every disk moves at every step,
 // computed from the positions of the step before: on any number of threads the same
