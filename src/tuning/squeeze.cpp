@@ -192,6 +192,44 @@ std::vector<Vec2> holes_largest_first(const Packing& packing) {
   return out;
 }
 
+// The holes taken for new disks, no two closer than r: at most one in each cell of side
+// at most r / sqrt(2), so a hole is checked against the 5 x 5 cells around its own.
+class TakenHoles {
+ public:
+  TakenHoles(const Frame& frame, double r)
+      : frame_(frame),
+        r_(r),
+        nx_(static_cast<int>(std::ceil(frame.extent.x * std::sqrt(2.0) / r))),
+        ny_(static_cast<int>(std::ceil(frame.extent.y * std::sqrt(2.0) / r))),
+        taken_(static_cast<std::size_t>(nx_) * ny_, Vec2{-1, -1}) {}
+
+  // Takes the hole unless it lies closer than r to one taken (then false).
+  bool take(Vec2 hole) {
+    const Vec2 at = hole - frame_.origin;
+    const int cx = std::min(nx_ - 1, static_cast<int>(at.x / frame_.extent.x * nx_));
+    const int cy = std::min(ny_ - 1, static_cast<int>(at.y / frame_.extent.y * ny_));
+    for (int dy = -2; dy <= 2; ++dy) {
+      const int y = (cy + dy + ny_) % ny_;
+      for (int dx = -2; dx <= 2; ++dx) {
+        const Vec2 other = taken_[y * nx_ + (cx + dx + nx_) % nx_];
+        if (other.x < 0) continue;
+        Vec2 d = other - at;
+        d.x -= frame_.extent.x * std::round(d.x / frame_.extent.x);
+        d.y -= frame_.extent.y * std::round(d.y / frame_.extent.y);
+        if (squared_norm(d) < r_ * r_) return false;
+      }
+    }
+    taken_[cy * nx_ + cx] = at;
+    return true;
+  }
+
+ private:
+  const Frame& frame_;
+  double r_;
+  int nx_, ny_;
+  std::vector<Vec2> taken_;  // relative to the origin; x < 0 where none
+};
+
 // One stage: `count` disks at the largest holes (no two closer than r), their conflicts
 // pushed apart, the voids refilled. Returns the disks added, or -1 when the pushes did not
 // settle within their budget (the packing is then not valid: the caller puts it back).
@@ -200,27 +238,25 @@ long squeeze_stage(Packing& packing, std::size_t count, Rng& rng, std::vector<Di
   const Frame& frame = packing.frame();
   const std::size_t before = packing.size();
   std::vector<DiskId> ids = packing.ids();
-  std::vector<Vec2> old_centers;
+  std::vector<Vec2> old_centers, x;  // x: the disks there, then the new ones
   old_centers.reserve(ids.size());
   for (const DiskId id : ids) old_centers.push_back(packing.center(id));
-  Packing chosen(frame, r);  // the holes taken, so that no two new disks conflict
+  x.reserve(ids.size() + count);
+  for (const Vec2 c : old_centers) x.push_back(c - frame.origin);
+  TakenHoles taken(frame, r);
   std::vector<int> active;
   for (const Vec2 hole : holes_largest_first(packing)) {
-    if (chosen.size() == count) break;
-    if (chosen.conflicts(hole)) continue;
-    chosen.insert(hole, r);
-    active.push_back(static_cast<int>(ids.size()));
-    ids.push_back(packing.insert(hole, r));
+    if (active.size() == count) break;
+    if (!taken.take(hole)) continue;
+    active.push_back(static_cast<int>(x.size()));
+    x.push_back(hole - frame.origin);
   }
-  std::vector<Vec2> x;
-  x.reserve(ids.size());
-  for (const DiskId id : ids) x.push_back(packing.center(id) - frame.origin);
   // Many new disks push the whole packing: soft disks (every disk moving at once, on
   // every core) bring it near a valid one in a few hundred steps, the pair pushes settle
   // the last gaps, which they do faster (soft_disks.h). A few new disks are pushed apart
   // by the pair pushes alone, which touch only the disks near them.
   std::vector<int> everyone;
-  if (count * kSoftShare >= ids.size()) {
+  if (count * kSoftShare >= x.size()) {
     detail::relax_soft_disks(frame, r, x, kSoftStop * r, kSoftSteps, detail::thread_count(0));
     everyone.resize(x.size());
     for (std::size_t i = 0; i < x.size(); ++i) everyone[i] = static_cast<int>(i);
@@ -230,12 +266,15 @@ long squeeze_stage(Packing& packing, std::size_t count, Rng& rng, std::vector<Di
   // Several times what settling takes at eta 0.80 from the sample (740 pushes a new disk
   // at gain 1.6, r = 0.01), so that a stage past where the packing jams gives up at a
   // bounded cost.
-  const long budget = 4000 * static_cast<long>(count) + 100 * static_cast<long>(ids.size());
+  const long budget = 4000 * static_cast<long>(count) + 100 * static_cast<long>(x.size());
   if (!quench.run(std::move(active), budget)) return -1;
   const std::vector<Vec2> ended = quench.positions();
-  for (std::size_t i = 0; i < ids.size(); ++i) {
+  for (std::size_t i = 0; i < ended.size(); ++i) {
     const Vec2 at = ended[i] + frame.origin;
-    if (!(at == packing.center(ids[i]))) packing.move(ids[i], at);
+    if (i >= old_centers.size())
+      ids.push_back(packing.insert(at, r));
+    else if (!(at == old_centers[i]))
+      packing.move(ids[i], at);
   }
   // Only what a moved disk covered before can be uncovered now (the packing was maximal,
   // and new disks only add cover): refill each such disk's old place.
