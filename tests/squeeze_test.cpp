@@ -137,6 +137,23 @@ TEST(Squeeze, SamePackingOnAnyNumberOfThreads) {
   }
 }
 
+// Past what can be packed (eta 0.92 is above the hexagonal lattice's 0.9069) the stages
+// jam: each gives up within its budget and is taken back, and the call returns what it
+// did add, with the packing valid (seeds 1-3, oracle).
+TEST(Squeeze, PastJammingItAddsWhatFitsAndStaysValid) {
+  const PeriodicBox box(0.5, 0.5);
+  for (const std::uint64_t seed : {1, 2, 3}) {
+    Rng rng(seed);
+    Packing p = sample_mps(box, 0.05, rng);
+    const std::size_t before = p.size();
+    const std::size_t ask = count_for_area_fraction(0.92, 0.05, box.area()) - before;
+    const std::size_t added = squeeze_inject(p, rng, ask);
+    EXPECT_LT(added, ask);
+    EXPECT_EQ(p.size(), before + added);
+    EXPECT_TRUE(valid(box, p, seed));
+  }
+}
+
 TEST(Squeeze, OnlyInAPeriodicBoxWithOneRadius) {
   {
     const PeriodicBox box(0.1, 1);

@@ -213,8 +213,10 @@ std::size_t grain_inject(Packing& packing, Rng& rng, std::size_t max_added,
 
 /// Squeeze injection (beyond the paper; the periodic box, one radius): one stage puts
 /// max_added new disks at once at the largest holes of the Delaunay triangulation (the
-/// largest circumcircles, no two new centers closer than r), pushes every conflicting
-/// pair apart until none is left, then refills the voids the moves opened; where the
+/// largest circumcircles, no two new centers closer than r), relaxes the packing as soft
+/// disks where the stage adds at least a sixteenth of it (on every core, the same packing
+/// on any number), pushes every pair still closer than r apart until none is left, then
+/// refills the voids the moves opened; where the
 /// refill passes max_added, as many disks are ejected again (attractor ejection, then
 /// sifting, of the refill's disks first). A stage that does not settle, or whose count
 /// cannot be brought back, is taken back and tried smaller. The stage moves many disks:

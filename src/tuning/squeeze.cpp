@@ -232,7 +232,8 @@ class TakenHoles {
 
 // One stage: `count` disks at the largest holes (no two closer than r), their conflicts
 // pushed apart, the voids refilled. Returns the disks added, or -1 when the pushes did not
-// settle within their budget (the packing is then not valid: the caller puts it back).
+// settle within their budget (the packing is then as it was: the moves are worked out on
+// copies of the centers and made only once they settle).
 long squeeze_stage(Packing& packing, std::size_t count, Rng& rng, std::vector<DiskId>& refilled) {
   const double r = packing.max_radius();
   const Frame& frame = packing.frame();
@@ -262,11 +263,11 @@ long squeeze_stage(Packing& packing, std::size_t count, Rng& rng, std::vector<Di
     for (std::size_t i = 0; i < x.size(); ++i) everyone[i] = static_cast<int>(i);
     active.swap(everyone);
   }
-  Quench quench(frame, r, std::move(x));
   // Several times what settling takes at eta 0.80 from the sample (740 pushes a new disk
   // at gain 1.6, r = 0.01), so that a stage past where the packing jams gives up at a
   // bounded cost.
   const long budget = 4000 * static_cast<long>(count) + 100 * static_cast<long>(x.size());
+  Quench quench(frame, r, std::move(x));
   if (!quench.run(std::move(active), budget)) return -1;
   const std::vector<Vec2> ended = quench.positions();
   for (std::size_t i = 0; i < ended.size(); ++i) {
