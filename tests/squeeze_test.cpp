@@ -154,6 +154,47 @@ TEST(Squeeze, PastJammingItAddsWhatFitsAndStaysValid) {
   }
 }
 
+// A stage's moves take seconds at 10^6 disks: `poll` is called while they are worked out,
+// the packing still as the call got it, and what it throws ends the call with the packing
+// so. tune reports progress there: its callback returning false cancels mid-stage.
+TEST(Squeeze, PollsWhileAStageRunsAndStopsWhereItThrows) {
+  const PeriodicBox box(1, 1);
+  struct Stop {};
+  for (const int stop_at : {1, 3}) {
+    Rng rng(2);
+    Packing p = sample_mps(box, 0.01, rng);
+    const auto given = test::centers_of(p);
+    const std::size_t ask = count_for_area_fraction(0.80, 0.01, box.area()) - p.size();
+    int polls = 0;
+    EXPECT_THROW(squeeze_inject(p, rng, ask, {},
+                                [&] {
+                                  EXPECT_EQ(test::centers_of(p), given);
+                                  if (++polls == stop_at) throw Stop{};
+                                }),
+                 Stop);
+    EXPECT_EQ(polls, stop_at);
+    EXPECT_EQ(test::centers_of(p), given);
+    // Not stopped, it polls on and adds all, valid.
+    polls = 0;
+    EXPECT_EQ(squeeze_inject(p, rng, ask, {}, [&] { ++polls; }), ask);
+    EXPECT_GE(polls, 4);
+    EXPECT_TRUE(valid(box, p, 2));
+  }
+  Rng rng(4);
+  Packing p = sample_mps(box, 0.01, rng);
+  const auto given = test::centers_of(p);
+  const std::size_t start = p.size();
+  TuneOptions o;
+  int mid_stage = 0;
+  o.on_progress = [&](const Progress& progress) {
+    mid_stage += progress.phase == Phase::squeeze_injection && progress.count == start;
+    return mid_stage < 2;
+  };
+  EXPECT_THROW(tune(p, box, Target::area_fraction(0.80), rng, o), Cancelled);
+  EXPECT_EQ(mid_stage, 2);
+  EXPECT_EQ(test::centers_of(p), given);
+}
+
 TEST(Squeeze, OnlyInAPeriodicBoxWithOneRadius) {
   {
     const PeriodicBox box(0.1, 1);

@@ -80,11 +80,17 @@ TEST(PhaseTimeLeft, ANewPhaseStartsANewFit) {
   EXPECT_NEAR(clock.seconds_left(), 360 / 20.0, 0.2);  // 20 disks a second, 360 left
 }
 
-TEST(PhaseTimeLeft, AStalledCountNeverGetsThereAndAReachedGoalHasNothingLeft) {
+TEST(PhaseTimeLeft, AStalledCountNeverGetsThereAnUnmovedOneIsNotKnownAReachedGoalHasNothingLeft) {
   PhaseTimeLeft stalled;
   for (int k = 0; k <= 40; ++k) stalled.add(0.05 * k, report(k < 10 ? k : 10, 5000, 6000));
   EXPECT_TRUE(std::isinf(stalled.seconds_left()));
   EXPECT_EQ(stalled.phase_fraction(), 0);
+  // A count that has not moved since the phase began is no stall (a squeeze stage under
+  // way adds its disks at its end): not known yet.
+  PhaseTimeLeft not_yet;
+  for (int k = 0; k <= 40; ++k)
+    not_yet.add(0.05 * k, report(0, 5000, 6000, Phase::squeeze_injection));
+  EXPECT_TRUE(std::isnan(not_yet.seconds_left()));
   PhaseTimeLeft reached;
   for (int k = 0; k <= 10; ++k) reached.add(0.1 * k, report(10.0 * k, 5000, 5100));
   EXPECT_EQ(reached.seconds_left(), 0);

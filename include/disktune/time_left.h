@@ -21,7 +21,8 @@ class PhaseTimeLeft {
   void add(double seconds, const Progress& progress);
 
   /// Seconds until the phase reaches its goal (Progress::phase_goal) at the fitted
-  /// pace: NaN while there are too few reports to tell, infinity where the count has
+  /// pace: NaN while there are too few reports to tell or the phase has not changed the
+  /// count yet (a squeeze stage adds its disks at its end), infinity where the count has
   /// stopped moving or the fitted pace never gets there (the phase then stalls, and the
   /// schedule moves on).
   double seconds_left() const;

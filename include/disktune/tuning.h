@@ -221,12 +221,16 @@ std::size_t grain_inject(Packing& packing, Rng& rng, std::size_t max_added,
 /// sifting, of the refill's disks first). A stage that does not settle, or whose count
 /// cannot be brought back, is taken back and tried smaller. The stage moves many disks:
 /// the packing is conflict-free and maximal before and after it, not in between.
-/// `after_step` runs once, after the stage. A quench, so the packing stays about as
-/// disordered as it was (docs/tuning.md). Returns the number of disks added (max_added,
-/// or fewer where the packing jams); throws InvalidInput in a planar domain or with a
-/// sizing.
+/// `after_step` runs once, after the stage. `poll`, where given, is called now and then
+/// while a stage's moves are worked out (every 16 steps of the soft disks or sweeps of
+/// the pushes: a stage of 10^6 disks takes seconds), the packing still as the call got
+/// it; what it throws ends the call and leaves the packing so (tune's progress callback
+/// is called there, and can cancel). A quench, so the packing stays about as disordered
+/// as it was (docs/tuning.md). Returns the number of disks added (max_added, or fewer
+/// where the packing jams); throws InvalidInput in a planar domain or with a sizing.
 std::size_t squeeze_inject(Packing& packing, Rng& rng, std::size_t max_added,
-                           const std::function<void()>& after_step = {});
+                           const std::function<void()>& after_step = {},
+                           const std::function<void()>& poll = {});
 
 /// Crystal-growth ejection (3.2): as crystal_inject, with the lattice spacing sqrt(3) r
 /// of the sparsest covering: a mobile disk covering a site moves there, the disks it

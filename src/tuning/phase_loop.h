@@ -68,6 +68,10 @@ struct PhasePlan {
   // Where set, a sweep tries the disks in the order of this rank, smallest first
   // (ranked_sweep), not at random; its sweeps are judged whole (not judge_parts).
   double (*rank)(const P&, DiskId) = nullptr;
+  // ...or a whole sweep that also calls its last argument while a long stage runs (squeeze
+  // injection: seconds at 10^6 disks), where tune reports progress and may be cancelled.
+  std::size_t (*polled_sweep)(P&, Rng&, std::size_t, const std::function<void()>&,
+                              const std::function<void()>&) = nullptr;
 };
 
 /// How wide the void lifting disk p would leave is: the largest distance between two of
@@ -159,6 +163,7 @@ std::vector<PhasePlan<P>> plan_for(const TuneOptions& o, bool eject, bool one_ra
                                                         const std::function<void()>&),
                                    bool curved = false, double target_eta = 0,
                                    std::size_t (*squeeze)(P&, Rng&, std::size_t,
+                                                          const std::function<void()>&,
                                                           const std::function<void()>&) = nullptr) {
   using Plan = PhasePlan<P>;
   const Plan void_phase{Phase::void_injection, &void_inject, nullptr, o.void_until};
@@ -176,7 +181,8 @@ std::vector<PhasePlan<P>> plan_for(const TuneOptions& o, bool eject, bool one_ra
   Plan crystal_after_grains = crystal_phase;
   crystal_after_grains.thaw = true;
   const Plan angle_phase{Phase::angle_injection, nullptr, angle, 2.0};
-  const Plan squeeze_phase{Phase::squeeze_injection, nullptr, squeeze, o.squeeze_until};
+  Plan squeeze_phase{Phase::squeeze_injection, nullptr, nullptr, o.squeeze_until};
+  squeeze_phase.polled_sweep = squeeze;
   const Plan sift_phase{Phase::sift_ejection, &sift_eject, nullptr, 2.0};
   const Plan attractor_phase{Phase::attractor_ejection, &attractor_eject, nullptr, 2.0};
   // Three rings of neighbours where one ring has stalled, the crystal (if it ran
@@ -332,16 +338,21 @@ TuneResult run_phases(P& packing, const P& entry, double unit, std::size_t goal,
   // random order (or ranked).
   auto run_sweep = [&](const PhasePlan<P>& plan, bool sparse, bool& stalled) -> std::size_t {
     const std::size_t size_before = packing.size();
-    if (plan.sweep) {
+    if (plan.sweep || plan.polled_sweep) {
       std::size_t steps = 0;
       // What is missing to the phase's goal (squeeze injection adds all of it at once).
       const std::size_t to_phase_goal =
           eject ? missing()
                 : std::min(missing(), phase_goal > size_before ? phase_goal - size_before : 0);
-      plan.sweep(packing, rng, to_phase_goal, [&] {
+      const std::function<void()> after_step = [&] {
         if (after_op) after_op(packing);
         if (++steps % 256 == 0) report(plan.phase);
-      });
+      };
+      if (plan.sweep) {
+        plan.sweep(packing, rng, to_phase_goal, after_step);
+      } else {
+        plan.polled_sweep(packing, rng, to_phase_goal, after_step, [&] { report(plan.phase); });
+      }
       return size_before;
     }
     std::vector<DiskId> order = packing.ids();

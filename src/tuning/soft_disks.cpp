@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "../geometry/threads.h"
+#include "box_cells.h"
 
 namespace disktune::detail {
 namespace {
@@ -56,7 +57,7 @@ class SoftDisks {
     return frame.extent.x >= 3 * cell && frame.extent.y >= 3 * cell;
   }
 
-  bool relax(double stop, long max_steps) {
+  bool relax(double stop, long max_steps, const std::function<void()>& poll) {
     build();
     double dt = kDtStart, alpha = kAlphaStart;
     double drift = 0, fastest_before = 0;
@@ -64,6 +65,7 @@ class SoftDisks {
     for (long step = 0;; ++step) {
       if (closest_after_forces() >= stop) return true;
       if (step == max_steps) return false;
+      if (poll && step % kPollSteps == kPollSteps - 1) poll();
       // FIRE: power P = F.v; downhill keeps going and speeds up, uphill stops dead.
       each_strip_in_parallel([&](int s) {
         Sums& sum = sums_[s];
@@ -114,23 +116,14 @@ class SoftDisks {
     }
   }
 
-  // Where each disk ended, in the order given, in [0, W) x [0, H).
-  std::vector<Vec2> positions() const {
-    std::vector<Vec2> out(x_.size());
-    for (std::size_t i = 0; i < x_.size(); ++i)
-      out[given_[i]] = {wrap(x_[i].x, w_), wrap(x_[i].y, h_)};
-    return out;
-  }
+  // Where each disk ended, in the order given, in [0, W) x [0, H) (origin not added).
+  std::vector<Vec2> positions() const { return in_given_order(x_, given_, {w_, h_}); }
 
  private:
   struct Sums {
     double power = 0, force2 = 0, velocity2 = 0;
   };
   static double dot(Vec2 a, Vec2 b) { return a.x * b.x + a.y * b.y; }
-  static double wrap(double v, double length) {
-    v -= std::floor(v / length) * length;
-    return v >= length ? 0 : v;
-  }
   int first_row(int strip) const { return strip * ny_ / strips_; }
   int first_of(int strip) const { return start_[first_row(strip) * nx_]; }
 
@@ -145,17 +138,8 @@ class SoftDisks {
   // than the sort (at 1.46 M disks, 140 ms a build, against some 40).
   void build() {
     const std::size_t n = x_.size();
-    start_.assign(static_cast<std::size_t>(nx_) * ny_ + 1, 0);
     std::vector<int>& cell = cell_;
-    cell.resize(n);
-    for (std::size_t i = 0; i < n; ++i) {
-      x_[i] = {wrap(x_[i].x, w_), wrap(x_[i].y, h_)};
-      const int cx = std::min(nx_ - 1, static_cast<int>(x_[i].x / w_ * nx_));
-      const int cy = std::min(ny_ - 1, static_cast<int>(x_[i].y / h_ * ny_));
-      cell[i] = cy * nx_ + cx;
-      ++start_[cell[i] + 1];
-    }
-    for (std::size_t c = 1; c < start_.size(); ++c) start_[c] += start_[c - 1];
+    count_by_cell(x_, {w_, h_}, nx_, ny_, cell, start_);
     fill_.assign(start_.begin(), start_.end() - 1);
     sorted_x_.resize(n), sorted_v_.resize(n), sorted_given_.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
@@ -277,9 +261,9 @@ class SoftDisks {
 bool soft_disks_fit(const Frame& frame, double r) { return SoftDisks::fits(frame, r); }
 
 bool relax_soft_disks(const Frame& frame, double r, std::vector<Vec2>& x, double stop,
-                      long max_steps, unsigned threads) {
+                      long max_steps, unsigned threads, const std::function<void()>& poll) {
   SoftDisks disks(frame, r, std::move(x), threads);
-  const bool reached = disks.relax(stop, max_steps);
+  const bool reached = disks.relax(stop, max_steps, poll);
   x = disks.positions();
   return reached;
 }

@@ -6,9 +6,11 @@
 // (docs/tuning.md).
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <vector>
 
 #include "../geometry/threads.h"
+#include "box_cells.h"
 #include "disktune/errors.h"
 #include "disktune/geometry.h"
 #include "disktune/mesh.h"
@@ -63,14 +65,15 @@ class Quench {
   // the sweep before (starting with `active`, indices as given), each pair by kGain times
   // half of what brings it to kPushTo r, until a sweep moves nothing. False when that took
   // more than `max_pushes` pushes (then the positions are wherever it stopped).
-  bool run(std::vector<int> active, long max_pushes) {
+  bool run(std::vector<int> active, long max_pushes, const std::function<void()>& poll) {
     const int n = static_cast<int>(x_.size());
     build(active);
     std::vector<char> marked(x_.size(), 0);
     std::vector<int> next;
     const double limit2 = 0.25 * kSlack * kSlack * r_ * r_;
     long pushes = 0;
-    while (!active.empty()) {
+    for (long sweep = 1; !active.empty(); ++sweep) {
+      if (poll && sweep % detail::kPollSteps == 0) poll();
       bool drifted = false;
       auto moved = [&](int i) {
         if (!marked[i]) marked[i] = 1, next.push_back(i);
@@ -122,32 +125,15 @@ class Quench {
   }
 
   // Where each disk ended, in the order given, in [0, W) x [0, H) (origin not added).
-  std::vector<Vec2> positions() const {
-    std::vector<Vec2> out(x_.size());
-    for (std::size_t i = 0; i < x_.size(); ++i)
-      out[given_[i]] = {wrap(x_[i].x, w_), wrap(x_[i].y, h_)};
-    return out;
-  }
+  std::vector<Vec2> positions() const { return detail::in_given_order(x_, given_, {w_, h_}); }
 
  private:
-  static double wrap(double v, double length) {
-    v -= std::floor(v / length) * length;
-    return v >= length ? 0 : v;
-  }
   // Sorts the disks by cell (counting sort, stable) and notes where each was; `active`
   // (indices before) is renumbered and comes out in increasing order.
   void build(std::vector<int>& active) {
     const std::size_t n = x_.size();
-    start_.assign(static_cast<std::size_t>(nx_) * ny_ + 1, 0);
-    std::vector<int> cell(n);
-    for (std::size_t i = 0; i < n; ++i) {
-      x_[i] = {wrap(x_[i].x, w_), wrap(x_[i].y, h_)};
-      const int cx = std::min(nx_ - 1, static_cast<int>(x_[i].x / w_ * nx_));
-      const int cy = std::min(ny_ - 1, static_cast<int>(x_[i].y / h_ * ny_));
-      cell[i] = cy * nx_ + cx;
-      ++start_[cell[i] + 1];
-    }
-    for (std::size_t c = 1; c < start_.size(); ++c) start_[c] += start_[c - 1];
+    std::vector<int> cell;
+    detail::count_by_cell(x_, {w_, h_}, nx_, ny_, cell, start_);
     std::vector<int> fill(start_.begin(), start_.end() - 1), to(n), given(n);
     std::vector<Vec2> x(n);
     cell_of_.resize(n);
@@ -233,8 +219,10 @@ class TakenHoles {
 // One stage: `count` disks at the largest holes (no two closer than r), their conflicts
 // pushed apart, the voids refilled. Returns the disks added, or -1 when the pushes did not
 // settle within their budget (the packing is then as it was: the moves are worked out on
-// copies of the centers and made only once they settle).
-long squeeze_stage(Packing& packing, std::size_t count, Rng& rng, std::vector<DiskId>& refilled) {
+// copies of the centers and made only once they settle). `poll` is called while they
+// are worked out, the packing untouched.
+long squeeze_stage(Packing& packing, std::size_t count, Rng& rng, std::vector<DiskId>& refilled,
+                   const std::function<void()>& poll) {
   const double r = packing.max_radius();
   const Frame& frame = packing.frame();
   const std::size_t before = packing.size();
@@ -258,7 +246,7 @@ long squeeze_stage(Packing& packing, std::size_t count, Rng& rng, std::vector<Di
   // by the pair pushes alone, which touch only the disks near them.
   std::vector<int> everyone;
   if (count * kSoftShare >= x.size()) {
-    detail::relax_soft_disks(frame, r, x, kSoftStop * r, kSoftSteps, detail::thread_count(0));
+    detail::relax_soft_disks(frame, r, x, kSoftStop * r, kSoftSteps, detail::thread_count(0), poll);
     everyone.resize(x.size());
     for (std::size_t i = 0; i < x.size(); ++i) everyone[i] = static_cast<int>(i);
     active.swap(everyone);
@@ -268,7 +256,7 @@ long squeeze_stage(Packing& packing, std::size_t count, Rng& rng, std::vector<Di
   // bounded cost.
   const long budget = 4000 * static_cast<long>(count) + 100 * static_cast<long>(x.size());
   Quench quench(frame, r, std::move(x));
-  if (!quench.run(std::move(active), budget)) return -1;
+  if (!quench.run(std::move(active), budget, poll)) return -1;
   const std::vector<Vec2> ended = quench.positions();
   for (std::size_t i = 0; i < ended.size(); ++i) {
     const Vec2 at = ended[i] + frame.origin;
@@ -320,7 +308,8 @@ std::size_t eject_after_refill(Packing& packing, const std::vector<DiskId>& refi
 }  // namespace
 
 std::size_t squeeze_inject(Packing& packing, Rng& rng, std::size_t max_added,
-                           const std::function<void()>& after_step) {
+                           const std::function<void()>& after_step,
+                           const std::function<void()>& poll) {
   if (!packing.frame().periodic || packing.domain() || packing.sizing()) {
     throw InvalidInput(
         "squeeze injection moves disks through the seams of a periodic box with one "
@@ -333,7 +322,7 @@ std::size_t squeeze_inject(Packing& packing, Rng& rng, std::size_t max_added,
   std::vector<DiskId> refilled;
   for (std::size_t want = max_added; want > 0;) {
     const Packing before = packing;
-    const long got = squeeze_stage(packing, want, rng, refilled);
+    const long got = squeeze_stage(packing, want, rng, refilled, poll);
     if (got >= 0) {
       // The refill can pass the count (2 disks from the sample of 111,453 to eta 0.80, 1
       // to 0.70): as many are taken out again, rather than the whole stage done again.

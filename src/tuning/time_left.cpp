@@ -53,6 +53,9 @@ double PhaseTimeLeft::seconds_left() const {
   const auto middle = std::lower_bound(first, reports_.end(), (first->seconds + now.seconds) / 2,
                                        [](const Report& r, double t) { return r.seconds < t; });
   if (reports_.end() - first < 4 || !(now.seconds > first->seconds)) return kUnknown;
+  // Nothing done yet in the phase: not a stall, a pace not seen yet (a squeeze stage
+  // adds all its disks at its end).
+  if (!(now.done > 0)) return kUnknown;
   const double moved = now.done - first->done;
   if (!(moved > 0)) return kNever;
   double pace = moved / (now.seconds - first->seconds);  // disks per second
