@@ -120,13 +120,13 @@ TEST(Squeeze, TheAutomaticScheduleSqueezesThenGrowsGrains) {
 // (the unit box at r = 0.01 in 40 strips of cells; a box of 3 x 4 cells, in 2 strips).
 TEST(Squeeze, SamePackingOnAnyNumberOfThreads) {
   const struct { double w, h, r, eta; } boxes[] = {{1, 1, 0.01, 0.80}, {0.037, 0.049, 0.01, 0.75}};
-  for (const auto& [w, h, r, eta] : boxes) {
-    const PeriodicBox box(w, h);
+  for (const auto& b : boxes) {  // not a structured binding: the lambda captures it
+    const PeriodicBox box(b.w, b.h);
     auto run = [&](unsigned threads) {
       set_default_threads(threads);
       Rng rng(5);
-      Packing p = sample_mps(box, r, rng);
-      const std::size_t ask = count_for_area_fraction(eta, r, box.area()) - p.size();
+      Packing p = sample_mps(box, b.r, rng);
+      const std::size_t ask = count_for_area_fraction(b.eta, b.r, box.area()) - p.size();
       EXPECT_EQ(squeeze_inject(p, rng, ask), ask);
       set_default_threads(0);
       return test::centers_of(p);
