@@ -15,6 +15,7 @@
 #include "disktune/geometry.h"
 #include "disktune/mesh.h"
 #include "disktune/tuning.h"
+#include "disktune/voids.h"
 #include "soft_disks.h"
 #include "undo_log.h"
 #include "void_repair.h"
@@ -266,13 +267,29 @@ long squeeze_stage(Packing& packing, std::size_t count, Rng& rng, std::vector<Di
       packing.move(ids[i], at);
   }
   // Only what a moved disk covered before can be uncovered now (the packing was maximal,
-  // and new disks only add cover): refill each such disk's old place.
+  // and new disks only add cover): refill each such disk's old place. Most hold no void:
+  // they are found on every core, the packing unchanged, and only the others refilled in
+  // order; a refill only adds cover, so a place found void-free stays so, and the
+  // packing is the one refilling every place in order would give.
+  std::vector<std::size_t> open;
+  detail::ordered_chunks<std::vector<std::size_t>>(
+      old_centers.size(), detail::thread_count(0),
+      [&](std::size_t from, std::size_t to, std::vector<std::size_t>& part) {
+        std::vector<Corner> corners;
+        for (std::size_t i = from; i < to; ++i) {
+          if (old_centers[i] == packing.center(ids[i])) continue;
+          corners.clear();
+          corners_in_region(packing, old_centers[i], r, {}, corners);
+          if (!corners.empty()) part.push_back(i);
+        }
+      },
+      [&](const std::vector<std::size_t>& part) {
+        open.insert(open.end(), part.begin(), part.end());
+      });
   const std::size_t settled = packing.size();
   detail::UndoLog log(packing);
-  for (std::size_t i = 0; i < old_centers.size(); ++i) {
-    if (!(old_centers[i] == packing.center(ids[i])))
-      detail::repair_void(log, packing, old_centers[i], r, rng, static_cast<std::size_t>(-2));
-  }
+  for (const std::size_t i : open)
+    detail::repair_void(log, packing, old_centers[i], r, rng, static_cast<std::size_t>(-2));
   log.commit();
   refilled.clear();
   if (packing.size() > settled) {  // the disks neither there before nor put at a hole
