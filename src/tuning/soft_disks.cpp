@@ -130,7 +130,7 @@ class SoftDisks {
   void build() {
     const std::size_t n = x_.size();
     std::vector<int>& cell = cell_;
-    count_by_cell(x_, {w_, h_}, nx_, ny_, cell, start_);
+    count_by_cell(x_, {w_, h_}, nx_, ny_, cell, start_, threads_);
     fill_.assign(start_.begin(), start_.end() - 1);
     sorted_x_.resize(n), sorted_v_.resize(n), sorted_given_.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
