@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Squeeze injection (beyond the paper): new disks at the largest holes of the periodic
-// Delaunay triangulation, the conflicts they make relaxed as soft disks and then pushed
+// Squeeze injection (beyond the paper): new disks at the largest holes (the Voronoi
+// vertices, holes.h), the conflicts they make relaxed as soft disks and then pushed
 // apart pair by pair until none is left, then the voids the moves opened refilled. A
 // quench, not a slow anneal: the packing stays as random as the sample it starts from
 // (docs/tuning.md).
@@ -13,9 +13,9 @@
 #include "box_cells.h"
 #include "disktune/errors.h"
 #include "disktune/geometry.h"
-#include "disktune/mesh.h"
 #include "disktune/tuning.h"
 #include "disktune/voids.h"
+#include "holes.h"
 #include "soft_disks.h"
 #include "undo_log.h"
 #include "void_repair.h"
@@ -159,26 +159,6 @@ class Quench {
   std::vector<int> given_;  // the index each disk was given by
 };
 
-// The circumcenters of the periodic Delaunay triangles, largest circle first: where a
-// new disk overlaps its neighbours least.
-std::vector<Vec2> holes_largest_first(const Packing& packing) {
-  const TriangleMesh mesh = periodic_delaunay(packing);
-  std::vector<std::pair<double, Vec2>> holes;
-  holes.reserve(mesh.triangles.size());
-  for (const auto& t : mesh.triangles) {
-    const Vec2 a = mesh.vertices[t[0]], b = mesh.vertices[t[1]], c = mesh.vertices[t[2]];
-    if (!(cross(b - a, c - a) > 0)) continue;  // degenerate (never with distinct centers)
-    const Vec2 o = circumcenter(a, b, c);
-    holes.push_back({squared_norm(o - a), packing.frame().wrap(o)});
-  }
-  std::stable_sort(holes.begin(), holes.end(),
-                   [](const auto& p, const auto& q) { return p.first > q.first; });
-  std::vector<Vec2> out;
-  out.reserve(holes.size());
-  for (const auto& h : holes) out.push_back(h.second);
-  return out;
-}
-
 // The holes taken for new disks, no two closer than r: at most one in each cell of side
 // at most r / sqrt(2), so a hole is checked against the 5 x 5 cells around its own.
 class TakenHoles {
@@ -235,7 +215,7 @@ long squeeze_stage(Packing& packing, std::size_t count, Rng& rng, std::vector<Di
   for (const Vec2 c : old_centers) x.push_back(c - frame.origin);
   TakenHoles taken(frame, r);
   std::vector<int> active;
-  for (const Vec2 hole : holes_largest_first(packing)) {
+  for (const Vec2 hole : detail::holes_largest_first(packing, detail::thread_count(0))) {
     if (active.size() == count) break;
     if (!taken.take(hole)) continue;
     active.push_back(static_cast<int>(x.size()));
