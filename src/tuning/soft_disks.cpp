@@ -24,8 +24,9 @@ constexpr double kAlphaStart = 0.1, kAlphaShrink = 0.99;
 constexpr int kDelay = 5;
 
 // The disks stored cell by cell (cells at least rest + skin wide, rows of cells in
-// strips), each with the list of its neighbours after it in its own cell and in the cell
-// to its right and the three above (so each pair once). A pair closer than rest pushes
+// strips), and each strip's pairs within reach listed disk by disk: each disk with those
+// after it in its own cell and in the cell to its right and the three above (so each
+// pair once). A pair closer than rest pushes
 // both disks apart by (rest^2 - d^2) / (2 rest^2) of their distance d: the spring's push
 // near contact, without a square root. A strip adds each pair's push to both disks, so it
 // writes into the first row of the strip above it (the last strip into strip 0's): the
@@ -138,10 +139,9 @@ class SoftDisks {
       sorted_x_[k] = x_[i], sorted_v_[k] = v_[i], sorted_given_[k] = given_[i];
     }
     x_.swap(sorted_x_), v_.swap(sorted_v_), given_.swap(sorted_given_);
-    first_.resize(n + 1);
     const double reach2 = (rest_ + skin_) * (rest_ + skin_);
     each_strip_in_parallel([&](int s) {
-      std::vector<int>& list = lists_[s];
+      std::vector<Pair>& list = lists_[s];
       int used = 0;
       for (int cy = first_row(s); cy < first_row(s + 1); ++cy) {
         const int up = cy + 1 < ny_ ? cy + 1 : 0;
@@ -153,20 +153,19 @@ class SoftDisks {
           int around = start_[c + 1] - start_[c];
           for (const int other : cells) around += start_[other + 1] - start_[other];
           for (int i = start_[c]; i < start_[c + 1]; ++i) {
-            first_[i] = used;
             if (list.size() < static_cast<std::size_t>(used + around))
               list.resize(2 * (used + around));
-            int* out = list.data();
+            Pair* out = list.data();
             const Vec2 xi = x_[i];
             // Every candidate written, kept by moving on only when within reach: no branch
             // to mispredict (about half are kept).
             for (int j = i + 1; j < start_[c + 1]; ++j) {
-              out[used] = j;
+              out[used] = {i, j};
               used += squared_norm(apart(xi, x_[j])) < reach2;
             }
             for (const int other : cells) {
               for (int j = start_[other]; j < start_[other + 1]; ++j) {
-                out[used] = j;
+                out[used] = {i, j};
                 used += squared_norm(apart(xi, x_[j])) < reach2;
               }
             }
@@ -211,27 +210,22 @@ class SoftDisks {
     const double rest2 = rest_ * rest_, stiffness = 0.5 / rest2;
     auto strip = [&](int s) {
       double m = rest2;  // rest when no pair is closer
-      const int* list = lists_[s].data();
+      const Pair* list = lists_[s].data();
       const Vec2* x = x_.data();
       Vec2* f = f_.data();
-      const int begin = first_of(s), end = first_of(s + 1);
-      for (int i = begin; i < end; ++i) {
-        const int last = i + 1 < end ? first_[i + 1] : listed_[s];
-        const Vec2 xi = x[i];
-        Vec2 fi{};
-        for (int k = first_[i]; k < last; ++k) {
-          const int j = list[k];
-          const Vec2 u = apart(xi, x[j]);
-          const double d2 = squared_norm(u);
-          m = std::min(m, d2);
-          // max(rest2 - d2, 0) without a branch: about half the listed pairs overlap,
-          // at random, and a branch mispredicted costs more than the arithmetic.
-          const double gap = rest2 - d2, over = 0.5 * (gap + std::fabs(gap));
-          const Vec2 push = u * (over * stiffness);
-          fi -= push;
-          f[j] += push;
-        }
-        f[i] += fi;
+      // One flat loop over the pairs: a loop per disk over its two or three pairs took
+      // a fifth longer (5.4 against 4.4 s for a stage of 1.46 M disks on two cores).
+      for (int k = 0, n = listed_[s]; k < n; ++k) {
+        const int i = list[k].i, j = list[k].j;
+        const Vec2 u = apart(x[i], x[j]);
+        const double d2 = squared_norm(u);
+        m = std::min(m, d2);
+        // max(rest2 - d2, 0) without a branch: about half the listed pairs overlap,
+        // at random, and a branch mispredicted costs more than the arithmetic.
+        const double gap = rest2 - d2, over = 0.5 * (gap + std::fabs(gap));
+        const Vec2 push = u * (over * stiffness);
+        f[i] -= push;
+        f[j] += push;
       }
       closest2[s] = m;
     };
@@ -261,9 +255,11 @@ class SoftDisks {
   std::vector<int> cell_, fill_, sorted_given_;  // scratch for the sort
   std::vector<int> given_;               // the index each disk was given by
   std::vector<int> start_;               // each cell's first disk
-  std::vector<int> first_;               // each disk's first entry in its strip's list
-  std::vector<std::vector<int>> lists_;  // each strip's neighbour lists, one after another
-  std::vector<int> listed_;              // how much of each strip's list is used
+  struct Pair {
+    int i, j;
+  };
+  std::vector<std::vector<Pair>> lists_;  // each strip's pairs, disk by disk
+  std::vector<int> listed_;               // how much of each strip's list is used
   std::vector<Sums> sums_;
 };
 
