@@ -129,6 +129,17 @@ TEST(Holes, WhereThePackingIsNotMaximalTheyAreTheDelaunayHoles) {
   const std::vector<DiskId> ids = p.ids();
   for (std::size_t k = 0; k < ids.size(); k += 9) p.remove(ids[k]);
   EXPECT_TRUE(detail::holes_largest_first(p, 2) == detail::delaunay_holes_largest_first(p));
+  // One disk taken out: its center is r or more from every other, so a void, whose
+  // Voronoi vertices may lie past r without reaching the cells' starting squares.
+  Packing whole = sample_mps(box, 0.05, rng);
+  const std::vector<DiskId> all = whole.ids();
+  for (std::size_t k = 0; k < 40; ++k) {
+    Packing one_less = whole;
+    one_less.remove(all[k]);
+    EXPECT_TRUE(detail::holes_largest_first(one_less, 2) ==
+                detail::delaunay_holes_largest_first(one_less))
+        << "disk " << all[k] << " taken out";
+  }
   const PeriodicBox narrow(0.2, 1.0);
   Packing q = sample_mps(narrow, 0.05, rng);
   EXPECT_TRUE(detail::holes_largest_first(q, 2) == detail::delaunay_holes_largest_first(q));

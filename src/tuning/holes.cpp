@@ -101,11 +101,12 @@ std::vector<Vec2> holes_largest_first(const Packing& packing, unsigned threads) 
   const std::vector<DiskId> ids = packing.ids();
   struct Part {
     std::vector<Hole> holes;
-    bool open = false;  // some cell reached its starting square: not maximal there
+    bool open = false;  // some cell reached past r: not maximal there
   };
   std::vector<Hole> holes;
   holes.reserve(2 * ids.size());
   bool open = false;
+  const double far2 = (1.005 * r) * (1.005 * r);
   ordered_chunks<Part>(
       ids.size(), threads,
       [&](std::size_t from, std::size_t to, Part& part) {
@@ -115,6 +116,8 @@ std::vector<Vec2> holes_largest_first(const Packing& packing, unsigned threads) 
           const Vec2 c = packing.center(id);
           // In a maximal packing the cell lies within r of c, so its vertices' disks
           // lie within 2 r; a square a little wider than r keeps none of its own sides.
+          // A vertex farther than 1.005 r could be cut off by a disk farther than 2.01 r,
+          // not looked at: the packing is not maximal there, and the cells not enough.
           cell.square(1.01 * r);
           packing.for_each_near(c, 2.01 * r, [&](const Neighbor& n) {
             if (n.id != id) cell.clip(n.image - c, n.id);
@@ -122,7 +125,7 @@ std::vector<Vec2> holes_largest_first(const Packing& packing, unsigned threads) 
           const std::size_t m = cell.at.size();
           for (std::size_t v = 0; v < m; ++v) {
             const DiskId before = cell.edge[(v + m - 1) % m], after = cell.edge[v];
-            if (before == kNoDisk || after == kNoDisk) {
+            if (before == kNoDisk || after == kNoDisk || squared_norm(cell.at[v]) > far2) {
               part.open = true;
               break;
             }

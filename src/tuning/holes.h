@@ -16,8 +16,8 @@ namespace disktune::detail {
 /// one radius r in a box at least 4.5 r wide each way has each disk's Voronoi cell
 /// within r of its center, bounded by the disks within 2r: the cells are made one disk
 /// at a time on up to `threads` threads, each vertex kept by the smallest id of its three
-/// disks (the same holes on any number of threads). Otherwise (some cell reaching past r:
-/// the packing is not maximal there) they come from periodic_delaunay. Near-degenerate
+/// disks (the same holes on any number of threads). Otherwise (some cell reaching past
+/// 1.005 r: the packing is not maximal there) they come from periodic_delaunay. Near-degenerate
 /// vertices (four disks on one circle, to rounding) may come twice or not at all: the
 /// holes only guide where new disks start.
 std::vector<Vec2> holes_largest_first(const Packing& packing, unsigned threads);
