@@ -220,7 +220,9 @@ std::size_t grain_inject(Packing& packing, Rng& rng, std::size_t max_added,
 /// refill passes max_added, as many disks are ejected again (attractor ejection, then
 /// sifting, of the refill's disks first). A stage that does not settle, or whose count
 /// cannot be brought back, is taken back and tried smaller. The stage moves many disks:
-/// the packing is conflict-free and maximal before and after it, not in between.
+/// the packing is conflict-free and maximal before and after it, not in between, and a
+/// stage numbers its disks anew, in order of place (ids held from before it name other
+/// disks after it).
 /// `after_step` runs once, after the stage. `poll`, where given, is called now and then
 /// while a stage's moves are worked out (every 16 steps of the soft disks or sweeps of
 /// the pushes: a stage of 10^6 disks takes seconds), the packing still as the call got
