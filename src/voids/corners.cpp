@@ -481,13 +481,21 @@ void corners_in_region(const Packing& packing, Vec2 center, double R,
     corners_of<false>(packing, s, center, R, out);
 }
 
-void corners_on_circle(const Packing& packing, DiskId p, std::vector<Corner>& out) {
+namespace {
+
+// corners_on_circle; where `conflict` is given, also sets it when some disk conflicts
+// with p (those within r of p are among the disks the one search finds).
+void circle_corners_and_conflict(const Packing& packing, DiskId p, std::vector<Corner>& out,
+                                 bool* conflict) {
   const Vec2 c = packing.center(p);
   const double r = packing.radius(p);
   Disks s;  // in the grid's order, p not among them (its other images are)
   alignas(16) double d2[kNear + 2];
   // Only disks within r + r_max can meet p's circle or cover a point of it.
-  const auto self = [p](const Neighbor& g) { return g.id == p && g.d2 == 0.0; };
+  const auto self = [&](const Neighbor& g) {
+    if (conflict && g.id != p && is_conflict(g.d2, std::min(r, g.radius))) *conflict = true;
+    return g.id == p && g.d2 == 0.0;
+  };
   if (!find_disks(packing, c, (r + packing.max_radius()) * (1 + 2 * kRelTol), self, s, d2))
     return corners_on_wide_circle(packing, p, out);
   finish(s);
@@ -505,6 +513,12 @@ void corners_on_circle(const Packing& packing, DiskId p, std::vector<Corner>& ou
         },
         out);
   }
+}
+
+}  // namespace
+
+void corners_on_circle(const Packing& packing, DiskId p, std::vector<Corner>& out) {
+  circle_corners_and_conflict(packing, p, out, nullptr);
 }
 
 namespace detail {
@@ -548,6 +562,21 @@ std::optional<std::string> first_hole(const Packing& packing) {
   std::vector<Corner> corners;
   corners_on_circle(packing, ids[i], corners);
   return "the point " + point_text(packing.frame().wrap(corners.front().point));
+}
+
+// The two searches above in one: each disk's neighbours found once (the check of a
+// tuned packing of 1.5 M disks 0.78-0.92 -> 0.58-0.77 s on two cores, of a sample of 10^6
+// 0.39-0.45 -> 0.31-0.38 s).
+bool conflict_free_and_maximal(const Packing& packing) {
+  if (uncovered_boundary_point(packing)) return false;
+  const std::vector<DiskId> ids = packing.ids();
+  return first_index(ids.size(), thread_count(0), [&](std::size_t k) {
+           thread_local std::vector<Corner> corners;
+           corners.clear();
+           bool conflict = false;
+           circle_corners_and_conflict(packing, ids[k], corners, &conflict);
+           return conflict || !corners.empty();
+         }) == ids.size();
 }
 
 }  // namespace detail

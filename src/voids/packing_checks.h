@@ -23,4 +23,11 @@ std::optional<std::array<DiskId, 2>> first_conflict(const SurfacePacking& packin
 std::optional<std::string> first_hole(const Packing& packing);
 std::optional<std::string> first_hole(const SurfacePacking& packing);
 
+/// Neither of the two: true when the packing is conflict-free and maximal. In the plane
+/// one search per disk does both; on a surface the two above.
+bool conflict_free_and_maximal(const Packing& packing);
+inline bool conflict_free_and_maximal(const SurfacePacking& packing) {
+  return !first_conflict(packing) && !first_hole(packing);
+}
+
 }  // namespace disktune::detail

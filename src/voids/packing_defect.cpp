@@ -18,6 +18,9 @@ bool one_radius(const SurfacePacking& packing) { return packing.sizing().is_cons
 template <class P>
 std::string defect_of(const P& packing) {
   if (packing.empty()) return "holds no disks";
+  // The common answer, none, from the fastest search; a defect is then named by the
+  // searches below, conflicts first.
+  if (detail::conflict_free_and_maximal(packing)) return "";
   if (const auto pair = detail::first_conflict(packing)) {
     return "the disks centered at " + detail::point_text(packing.center((*pair)[0])) + " and " +
            detail::point_text(packing.center((*pair)[1])) + " cover each other's centers (a conflict): they are closer than " +
