@@ -87,8 +87,7 @@ std::vector<Vec2> delaunay_holes_largest_first(const Packing& packing) {
     const Vec2 o = circumcenter(a, b, c);
     holes.push_back({squared_norm(o - a), packing.frame().wrap(o)});
   }
-  std::stable_sort(holes.begin(), holes.end(),
-                   [](const Hole& p, const Hole& q) { return p.first > q.first; });
+  sort_widest_first(holes, 1);
   return centers_of(holes);
 }
 
