@@ -254,9 +254,7 @@ long squeeze_stage(Packing& packing, std::size_t count, Rng& rng, std::vector<Di
     std::vector<DiskId> id_of(ended.size());
     for (const int i : quench.given_by_place()) {
       const bool old = static_cast<std::size_t>(i) < old_centers.size();
-      const Vec2 at = ended[i] + frame.origin;
-      id_of[i] = placed.insert(old && at == old_centers[i] ? old_centers[i] : at, r,
-                               old ? packing.flags(ids[i]) : 0);
+      id_of[i] = placed.insert(ended[i] + frame.origin, r, old ? packing.flags(ids[i]) : 0);
     }
     replaced = std::exchange(packing, std::move(placed));
     ids.swap(id_of);
