@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "../src/tuning/relax_at_end.h"
 #include "brute_delaunay.h"
 #include "disktune/density.h"
 #include "disktune/planar_domain.h"
@@ -321,9 +322,11 @@ TEST(Relaxation, AtTheEndLeavesAValidPackingMeshedAsWellAsCheckingEveryMove) {
           if (!(start.flags(id) & kFixed)) continue;
           EXPECT_EQ(squared_norm(p.center(id) - start.center(id)), 0.0) << what;
         }
-        std::size_t same_as_every = 0;
-        for (const DiskId id : p.ids())
-          same_as_every += squared_norm(p.center(id) - every.center(id)) == 0;
+        std::size_t same_as_every = 0;  // a disk put in a void may take a new id
+        for (const DiskId id : p.ids()) {
+          same_as_every += id < every.id_bound() && every.alive(id) &&
+                           squared_norm(p.center(id) - every.center(id)) == 0;
+        }
         closed += same_as_every < p.size();
         ++runs;
         const test::AngleShares at_end = test::angle_shares(restricted_delaunay(p));
@@ -334,7 +337,10 @@ TEST(Relaxation, AtTheEndLeavesAValidPackingMeshedAsWellAsCheckingEveryMove) {
             "%.4f (%.4f)%s\n",
             what.c_str(), p.size(), at_end.near_60, checked.near_60, at_end.obtuse, checked.obtuse,
             same_as_every == p.size() ? ", fell back" : "");
-        EXPECT_GT(at_end.near_60, checked.near_60 - 0.02) << what;
+        // Beside an open boundary the moves stay checked: there a closer margin, which
+        // moves unchecked there too miss (0.766 / 0.781 against 0.778 / 0.793).
+        const double margin = std::string(file) == "mesh_with_border.off" ? 0.005 : 0.02;
+        EXPECT_GT(at_end.near_60, checked.near_60 - margin) << what;
         EXPECT_LT(at_end.obtuse, checked.obtuse + 0.01) << what;
       }
     }
@@ -350,6 +356,8 @@ TEST(Relaxation, AtTheEndLeavesAValidPackingMeshedAsWellAsCheckingEveryMove) {
 // is pulled over the sliver unchecked and the void it leaves behind closes among disks
 // with room. The packing must pass the oracle, keep its fixed disks and count, and
 // differ from what checking every move gives (a fallback would give exactly that).
+// Since 2026-12-07 a void two rounds leave open gets a disk of its own first: turned off
+// here, to reach the pull.
 TEST(Relaxation, AtTheEndPullsADiskOverAVoidHeldOnAllSides) {
   SurfaceDomain d = *test::surface_file("mesh_with_border.off");
   d.set_features(detect_features(d, {60, 60, 0}));
@@ -359,7 +367,7 @@ TEST(Relaxation, AtTheEndPullsADiskOverAVoidHeldOnAllSides) {
   const double spacing = hex_spacing(static_cast<double>(start.size()) / density_unit(start));
   SurfacePacking at_end = start, every = start;
   Rng a(9), b(9);
-  relax(at_end, spacing, 30, a, {}, 1, Maximality::at_end);
+  detail::relax_at_end(at_end, spacing, 30, a, {}, 1, detail::kNeverInject);
   relax(every, spacing, 30, b, {}, 1, Maximality::every_move);
   ASSERT_EQ(at_end.size(), start.size());
   const auto rep = test::surface_report(at_end);
@@ -375,10 +383,11 @@ TEST(Relaxation, AtTheEndPullsADiskOverAVoidHeldOnAllSides) {
 }
 
 // Spring lengths of three and four radii jam the disks into rings around voids none of
-// them can reach without meeting another: such voids will not close, and the sweeps run
-// again with every move checked, from the same start and random state: every_move's
-// packing, bit for bit, and its move count and random state after. Runs that do close
-// their voids must pass the oracle all the same; at least one run must fall back.
+// them can reach without meeting another: such voids will not close by moves (a disk
+// of their own turned off here), and the sweeps run again with every move checked,
+// from the same start and random state: every_move's packing, bit for bit, and its
+// move count and random state after. Runs that do close their voids must pass the
+// oracle all the same; at least one run must fall back.
 TEST(Relaxation, AtTheEndFallsBackToCheckingEveryMoveWhereVoidsWillNotClose) {
   const auto surface = test::surface_file("elephant.off");
   std::size_t fell_back = 0;
@@ -389,7 +398,8 @@ TEST(Relaxation, AtTheEndFallsBackToCheckingEveryMoveWhereVoidsWillNotClose) {
       SurfacePacking every = start, at_end = start;
       Rng a(9), b(9);
       const std::size_t every_moved = relax(every, spacing, 12, a, {}, 2, Maximality::every_move);
-      const std::size_t at_end_moved = relax(at_end, spacing, 12, b, {}, 2, Maximality::at_end);
+      const std::size_t at_end_moved =
+          detail::relax_at_end(at_end, spacing, 12, b, {}, 2, detail::kNeverInject);
       ASSERT_EQ(at_end.size(), every.size());
       const auto rep = test::surface_report(at_end);
       EXPECT_TRUE(rep.ok()) << "seed " << seed << ", spacing " << spacing << ": " << rep.summary();
@@ -407,6 +417,73 @@ TEST(Relaxation, AtTheEndFallsBackToCheckingEveryMoveWhereVoidsWillNotClose) {
               fell_back);
   EXPECT_GT(fell_back, 0u)
       << "no run fell back: the test needs a packing whose voids will not close";
+}
+
+// The same jammed rings with Maximality::at_end as relax runs it: a void that two rounds
+// of pulls leave open gets a disk of its own, and a disk near it is ejected, so no run
+// falls back. Each keeps its count and fixed disks, passes the oracle, is the same on
+// one and three threads and differs from every_move's packing; in some, disks were
+// exchanged (a disk of the start gone). mesh_with_border's run is the one whose sliver
+// beside the boundary no checked pull closes (above).
+TEST(Relaxation, AtTheEndGivesAVoidNoMoveClosesADiskOfItsOwn) {
+  struct Case {
+    const char* file;
+    double r;
+    std::uint64_t seed;
+    double spacing;  // 0: a hexagonal packing's
+    int sweeps;
+  };
+  const Case cases[] = {{"elephant.off", 0.015, 1, 3.0, 12},
+                        {"elephant.off", 0.015, 1, 4.0, 12},
+                        {"elephant.off", 0.015, 2, 3.0, 12},
+                        {"elephant.off", 0.015, 2, 4.0, 12},
+                        {"mesh_with_border.off", 0.35, 12, 0, 30}};
+  std::size_t exchanged_runs = 0;
+  for (const Case& c : cases) {
+    SurfaceDomain d = *test::surface_file(c.file);
+    d.set_features(detect_features(d, {60, 60, 0}));
+    const auto surface = std::make_shared<const SurfaceDomain>(std::move(d));
+    Rng rng(c.seed);
+    const SurfacePacking start = sample_mps(surface, SurfaceSizing::constant(c.r), rng);
+    const double spacing =
+        c.spacing > 0 ? c.spacing
+                      : hex_spacing(static_cast<double>(start.size()) / density_unit(start));
+    const std::string what = std::string(c.file) + " seed " + std::to_string(c.seed) +
+                             ", spacing " + std::to_string(spacing);
+    SurfacePacking every = start;
+    Rng b(9);
+    relax(every, spacing, c.sweeps, b, {}, 1, Maximality::every_move);
+    std::vector<Vec3> first;
+    for (const unsigned threads : {1u, 3u}) {
+      SurfacePacking at_end = start;
+      Rng a(9);
+      relax(at_end, spacing, c.sweeps, a, {}, threads, Maximality::at_end);
+      std::vector<Vec3> centers;
+      for (const DiskId id : at_end.ids()) centers.push_back(at_end.center(id));
+      if (threads > 1) {
+        EXPECT_TRUE(centers == first) << what << ": " << threads << " threads differ from one";
+        continue;
+      }
+      first = centers;
+      ASSERT_EQ(at_end.size(), start.size()) << what;
+      const auto rep = test::surface_report(at_end);
+      EXPECT_TRUE(rep.ok()) << what << ": " << rep.summary();
+      std::size_t gone = 0, same_as_every = 0;
+      for (const DiskId id : start.ids()) {
+        gone += !at_end.alive(id);
+        if (start.flags(id) & kFixed) {
+          ASSERT_TRUE(at_end.alive(id)) << what;
+          EXPECT_EQ(squared_norm(at_end.center(id) - start.center(id)), 0.0) << what;
+        }
+        same_as_every += at_end.alive(id) && every.alive(id) &&
+                         squared_norm(at_end.center(id) - every.center(id)) == 0;
+      }
+      EXPECT_LT(same_as_every, start.size()) << what << ": fell back to checking every move";
+      exchanged_runs += gone > 0;
+      std::printf("[ relax ] %s: %zu disks of %zu exchanged\n", what.c_str(), gone, start.size());
+    }
+  }
+  EXPECT_GT(exchanged_runs, 0u) << "no run put a disk in a void: the test does not reach it";
 }
 
 // After relaxation about one triangle in a hundred is obtuse; moving the vertex of each

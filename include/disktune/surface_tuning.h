@@ -62,13 +62,16 @@ std::size_t wide_attractor_eject(SurfacePacking& packing, DiskId p, Rng& rng, st
 std::size_t relax(SurfacePacking& packing, double spacing, Rng& rng, unsigned threads = 0);
 /// When several sweeps of relax keep the packing maximal. `every_move`: each move is
 /// checked not to uncover anything (the packing is maximal after every move).
-/// `at_end`: the sweeps' moves are checked for conflicts only; then the voids they
-/// opened (a handful among 10^4 disks) are found by an exact scan of the surface and
-/// closed by checked moves of the disks next to them, and two more sweeps, checked, move
-/// the disks within two rest lengths of those (after_sweep sees sweeps + 2); where a
-/// void will not close, the sweeps run again from the start as `every_move` (same seed,
-/// same result). The result is maximal either way and the meshes alike; `at_end` takes
-/// about a third of the time (remesh uses it), but `after_sweep` may see voids.
+/// `at_end`: the sweeps' moves are checked for conflicts only (but those of disks near
+/// an open boundary's fixed disks); then the voids they opened (a handful among 10^4
+/// disks) are found by an exact scan of the surface and closed by checked moves of the
+/// disks next to them, or, where two rounds of such moves leave one open, by a disk put
+/// in it and the nearest disk that attractor ejection can take out taken out (the count
+/// stays; disk ids are not kept then), and two more sweeps, checked, move the disks
+/// within two rest lengths of those (after_sweep sees sweeps + 2); where a void will
+/// not close, the sweeps run again from the start as `every_move` (same seed, same
+/// result). The result is maximal either way and the meshes alike; `at_end` takes about
+/// a third of the time (remesh uses it), but `after_sweep` may see voids.
 enum class Maximality { every_move, at_end };
 /// Several sweeps with momentum (tuning.h), on up to `threads` threads as above.
 std::size_t relax(SurfacePacking& packing, double spacing, int sweeps, Rng& rng,

@@ -18,6 +18,7 @@
 #include <optional>
 #include <string>
 #include <type_traits>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -28,6 +29,7 @@
 #include "disktune/surface_voids.h"
 #include "disktune/tuning.h"
 #include "neighbour_lists.h"
+#include "relax_at_end.h"
 #include "space.h"
 
 namespace disktune {
@@ -121,16 +123,49 @@ using SpringNeighbours =
 // on one thread with the disks' lists (their conflict checks from them too).
 constexpr double kListSlack = 0.3;
 
+// The fixed disks on an open boundary (on one of its edges or vertices), by id.
+std::vector<char> fixed_on_open_boundary(const SurfacePacking& packing) {
+  std::vector<char> on(packing.id_bound(), 0);
+  const SurfaceDomain& domain = packing.domain();
+  if (domain.is_closed()) return on;
+  std::unordered_set<std::uint64_t> edges;
+  std::unordered_set<std::size_t> corners;
+  const auto key = [](std::size_t a, std::size_t b) {
+    return (static_cast<std::uint64_t>(std::min(a, b)) << 32) | std::max(a, b);
+  };
+  for (const std::vector<std::size_t>& loop : domain.boundary_loops()) {
+    for (std::size_t i = 0; i < loop.size(); ++i) {
+      edges.insert(key(loop[i], loop[(i + 1) % loop.size()]));
+      corners.insert(loop[i]);
+    }
+  }
+  const std::vector<Vec3>& v = domain.vertices();
+  const double tol = 1e-9 * norm(domain.bbox_max() - domain.bbox_min());
+  for (const DiskId id : packing.ids()) {
+    if (!(packing.flags(id) & kFixed)) continue;
+    const Vec3 c = packing.center(id);
+    const SurfaceDomain::Triangle& t = domain.triangles()[packing.point(id).triangle];
+    for (int k = 0; k < 3 && !on[id]; ++k) {
+      const std::size_t a = t[k], b = t[(k + 1) % 3];
+      on[id] = (edges.count(key(a, b)) && distance_to_segment(c, v[a], v[b]) <= tol) ||
+               (corners.count(a) && norm(c - v[a]) <= tol);
+    }
+  }
+  return on;
+}
+
 struct SurfaceKept {
   SurfaceKept(const SurfacePacking& packing, double spacing)
       : near(packing.id_bound(), packing.max_radius() * (1 + 1e-6), 0.5 * packing.max_radius()),
         springs(packing.id_bound(), 1.5 * spacing * packing.max_radius(),
                 kListSlack * packing.max_radius()),
-        cells_made_at(packing.id_bound(), Vec3{kFar, kFar, kFar}) {}
+        cells_made_at(packing.id_bound(), Vec3{kFar, kFar, kFar}),
+        on_open_boundary(fixed_on_open_boundary(packing)) {}
   static constexpr double kFar = 1e300;
   detail::TrianglesNearDisks near;
   detail::NeighbourLists springs;
   std::vector<Vec3> cells_made_at;
+  std::vector<char> on_open_boundary;  // of the fixed disks
 };
 
 struct PlaneKept {
@@ -141,18 +176,23 @@ struct PlaneKept {
 template <class P>
 using Kept = std::conditional_t<std::is_same_v<P, SurfacePacking>, SurfaceKept, PlaneKept>;
 
-// With `check_all` false (a surface's), a disk with no fixed disk in reach of its
-// springs is checked for conflicts only (move_toward): pushed off a boundary or a
-// crease, a disk opens gaps there that no neighbour fills, elsewhere a few.
+// Where `unchecked_but_near` is given (a surface's), a disk with none of the fixed disks
+// it marks in reach of its springs is checked for conflicts only (move_toward): the
+// caller closes the voids such moves open (close_voids). Pushed off an open boundary, a
+// disk opens gaps along it that no neighbour fills: checked there, remesh's meshes of
+// mesh_with_border keep 87.0-88.0 % of their angles in [50, 70] against 85.1-86.1 %
+// (10^4 vertices, seeds 1-4), at no cost in time; beside a feature curve not (fandisk:
+// a quarter of remesh's instructions spared, 0.3 points fewer angles in [50, 70]).
 template <class P>
 bool relax_disk(P& packing, DiskId p, double spacing, Steps<P>* last, NearTriangles<P>& near,
-                SpringNeighbours<P>& springs, bool check_all = true) {
+                SpringNeighbours<P>& springs,
+                const std::vector<char>* unchecked_but_near = nullptr) {
   using S = detail::Space<P>;
   if (packing.flags(p) & (kFixed | kFrozen)) return false;
   const auto c = packing.center(p);
   const double r = packing.radius(p), rest = spacing * r;
   auto force = c - c;
-  bool fixed_near = false;
+  bool checked = !unchecked_but_near;
   const auto push = [&](DiskId q, decltype(c) image, double d2) {
     // Across a feature too, though disks there do not conflict: pushed apart, they do not
     // make thin triangles at the crease (fandisk, r = 0.04, 12 sweeps: angles in [50, 70]
@@ -162,7 +202,7 @@ bool relax_disk(P& packing, DiskId p, double spacing, Steps<P>* last, NearTriang
     // A fixed disk (a boundary or a crease) only pushes: pulled toward a crease, a disk
     // can end where its Voronoi cell reaches across it.
     const bool fixed = packing.flags(q) & kFixed;
-    fixed_near = fixed_near || fixed;
+    checked = checked || (fixed && (*unchecked_but_near)[q]);
     const double f = fixed ? std::max(spring(d / rest), 0.0) : spring(d / rest);
     force = force + (c - image) * (f / d);
   };
@@ -181,9 +221,8 @@ bool relax_disk(P& packing, DiskId p, double spacing, Steps<P>* last, NearTriang
   if (length > 0.25 * rest) step = step * (0.25 * rest / length);
   double part = 0;
   if constexpr (std::is_same_v<P, SurfacePacking>) {
-    part = check_all || fixed_near
-               ? move_toward(packing, p, c + step, &near.of(packing, p), true, &springs)
-               : move_toward(packing, p, c + step, nullptr, false, &springs);
+    part = checked ? move_toward(packing, p, c + step, &near.of(packing, p), true, &springs)
+                   : move_toward(packing, p, c + step, nullptr, false, &springs);
     if (part > 0) springs.moved(packing, p);
   } else {
     part = move_toward(packing, p, c + step);
@@ -260,7 +299,8 @@ std::size_t sweep(SurfacePacking& packing, double spacing, Rng& rng, Steps<Surfa
       std::size_t here = 0;
       for (const DiskId* p = first; p != end; ++p)
         if (!only || (*only)[*p])
-          here += relax_disk(packing, *p, spacing, last, kept.near, springs, check_all);
+          here += relax_disk(packing, *p, spacing, last, kept.near, springs,
+                             check_all ? nullptr : &kept.on_open_boundary);
       moved += here;
     });
   }
@@ -286,6 +326,40 @@ std::vector<std::uint32_t> triangles_with_voids(const SurfacePacking& packing, u
   return out;
 }
 
+// Takes as many disks out as `injected` holds, for each the nearest free disk other than
+// itself (within a few radii, else any) that attractor ejection removes; appends the
+// disks near each one taken out to `pulled`. Nothing where some cannot be matched.
+std::optional<std::size_t> eject_beside(SurfacePacking& packing,
+                                        const std::vector<DiskId>& injected, Rng& rng,
+                                        std::vector<DiskId>& pulled) {
+  const double r = packing.max_radius();
+  const auto free = [&](DiskId q) { return !(packing.flags(q) & (kFixed | kFrozen)); };
+  const auto eject = [&](DiskId q) {
+    const Vec3 c = packing.center(q);
+    if (attractor_eject(packing, q, rng, 1) != 1) return false;
+    packing.for_each_near(c, 2 * r, [&](DiskId id) { pulled.push_back(id); });
+    return true;
+  };
+  std::vector<std::pair<double, DiskId>> near;  // squared distance, disk
+  for (const DiskId in : injected) {
+    const Vec3 c = packing.center(in);
+    near.clear();
+    packing.for_each_near(c, 6 * r, [&](DiskId q) {
+      if (q != in && free(q)) near.emplace_back(squared_norm(packing.center(q) - c), q);
+    });
+    std::sort(near.begin(), near.end());
+    bool done = false;
+    for (const auto& [d2, q] : near)
+      if (packing.alive(q) && (done = eject(q))) break;
+    if (!done) {
+      for (const DiskId q : packing.ids())
+        if (q != in && free(q) && (done = eject(q))) break;
+    }
+    if (!done) return std::nullopt;
+  }
+  return injected.size();
+}
+
 // Closes the voids that sweeps without coverage checks opened (a handful among 10^4
 // disks: where a spring pulled a disk off a gap no neighbour filled). Each void point
 // pulls the nearest free disk within two radii that can cover it (on its patch) until
@@ -296,10 +370,18 @@ std::vector<std::uint32_t> triangles_with_voids(const SurfacePacking& packing, u
 // against it), the nearest disk that meets none there is pulled over each void anyway,
 // by a move checked for conflicts only: the void moves behind it, among disks with room
 // to close it, and the triangles near where the disk was are scanned from then on (a
-// move uncovers nothing farther). False where some void remains after 16 rounds.
-// `pulled` gets each disk moved (once a move).
-bool close_voids(SurfacePacking& packing, unsigned threads, std::size_t& moved,
-                 std::vector<DiskId>& pulled) {
+// move uncovers nothing farther). From round `inject_from` on, each void still open
+// gets a disk of its own, and once none is left, as many disks are ejected, each the
+// nearest one to a new disk that attractor ejection can take out (a checked operation):
+// the count stays. (Such voids lie mostly beside a feature curve, among disks pressed
+// against its fixed disks; pulled round after round, they closed by hairs, and some
+// never.) Returns how many disks were exchanged, or nothing where some void remains
+// after 16 rounds or some new disk has no partner. `pulled` gets each disk moved (once
+// a move) or new, and those near each disk ejected.
+std::optional<std::size_t> close_voids(SurfacePacking& packing, unsigned threads, Rng& rng,
+                                       int inject_from, std::size_t& moved,
+                                       std::vector<DiskId>& pulled) {
+  std::vector<DiskId> injected;
   std::vector<std::uint32_t> holed = triangles_with_voids(packing, threads);
   std::vector<SurfaceVoidPoint> voids;
   std::vector<std::pair<double, DiskId>> near;  // squared distance, disk
@@ -324,8 +406,17 @@ bool close_voids(SurfacePacking& packing, unsigned threads, std::size_t& moved,
       if (voids.size() > before) still.push_back(t);
     }
     holed.swap(still);
-    if (voids.empty()) return true;
-    if (round == 16) return false;
+    if (voids.empty()) return eject_beside(packing, injected, rng, pulled);
+    if (round == 16) return std::nullopt;
+    if (round >= inject_from) {
+      const std::size_t before = injected.size();
+      for (const SurfaceVoidPoint& v : voids) {
+        if (packing.conflicts(v.at)) continue;  // a disk put at an earlier void point
+        injected.push_back(packing.insert(v.at));
+        pulled.push_back(injected.back());
+      }
+      if (injected.size() > before) continue;
+    }
     const std::size_t moved_before = moved;
     for (const SurfaceVoidPoint& v : voids) {
       disks_near(v);
@@ -378,15 +469,16 @@ bool close_voids(SurfacePacking& packing, unsigned threads, std::size_t& moved,
   }
 }
 
-// The first `unchecked` sweeps (a surface's) check their moves for conflicts only, but
-// next to fixed disks; then `close(moved, pulled)` must make the packing maximal again
-// (listing the disks it moved in `pulled`), or the run stops there, answering nothing.
-// The sweeps after it move only the disks `only` marks, where given (a surface's).
+// The first `unchecked` sweeps (a surface's) check their moves for conflicts only; then
+// `close(moved, pulled)` must make the packing maximal again (listing the disks it moved
+// in `pulled`, answering how many disks it exchanged), or the run stops there, answering
+// nothing. The sweeps after it move only the disks `only` marks, where given (a
+// surface's).
 template <class P>
 std::optional<std::size_t> relax_in(
     P& packing, double spacing, int sweeps, Rng& rng, const std::function<bool(int)>& after_sweep,
     unsigned threads, int unchecked = 0,
-    const std::function<bool(std::size_t&, std::vector<DiskId>&)>& close = {},
+    const std::function<std::optional<std::size_t>(std::size_t&, std::vector<DiskId>&)>& close = {},
     const std::vector<char>* only = nullptr) {
   check_spacing(spacing);
   if (sweeps < 0) throw InvalidInput("relax: the number of sweeps must be 0 or more, got " + std::to_string(sweeps));
@@ -397,9 +489,14 @@ std::optional<std::size_t> relax_in(
   std::vector<DiskId> pulled;
   for (int k = 0; k < sweeps; ++k) {
     if (open && k == unchecked) {
-      if (!close(moved, pulled)) return std::nullopt;
-      if constexpr (std::is_same_v<P, SurfacePacking>)
+      const std::optional<std::size_t> exchanged = close(moved, pulled);
+      if (!exchanged) return std::nullopt;
+      if (*exchanged > 0) {  // disks came and went: what is kept of each made anew
+        last.assign(packing.id_bound(), typename Steps<P>::value_type{});
+        kept = Kept<P>(packing, spacing);
+      } else if constexpr (std::is_same_v<P, SurfacePacking>) {
         for (const DiskId q : pulled) kept.springs.moved(packing, q);  // at its last place
+      }
       open = false;
     }
     if constexpr (std::is_same_v<P, SurfacePacking>) {
@@ -435,32 +532,44 @@ std::size_t relax(Packing& packing, double spacing, int sweeps, Rng& rng, const 
 std::size_t relax(SurfacePacking& packing, double spacing, int sweeps, Rng& rng,
                   const std::function<bool(int)>& after_sweep, unsigned threads,
                   Maximality maximality) {
+  if (maximality == Maximality::every_move)
+    return *relax_in(packing, spacing, sweeps, rng, after_sweep, detail::thread_count(threads));
+  return detail::relax_at_end(packing, spacing, sweeps, rng, after_sweep, threads,
+                              detail::kInjectFromRound);
+}
+
+std::size_t detail::relax_at_end(SurfacePacking& packing, double spacing, int sweeps, Rng& rng,
+                                 const std::function<bool(int)>& after_sweep, unsigned threads,
+                                 int inject_from) {
   threads = detail::thread_count(threads);
-  if (maximality == Maximality::every_move || sweeps <= 0)
-    return *relax_in(packing, spacing, sweeps, rng, after_sweep, threads);
-  // The sweeps with only the conflict checks (but next to fixed disks), the voids they
-  // opened closed, and two checked sweeps over the disks within two rest lengths of
-  // those closing moved, which smooth what it bent (the smallest angle of remesh's
-  // meshes at 10^4 vertices, elephant and eight, seeds 1-4: 31.6-33.4 degrees without
-  // them, 34.9-37.6 with). Until 2026-12-06 the last two of `sweeps` were the checked
-  // ones, over every disk; against that (remesh on four surfaces at 10^4 and 3·10^4
-  // vertices, seeds 1-2) relaxation of the elephant at 10^4 took 0.34-0.37 -> 0.27-0.31
-  // s on one core, the angles in [50, 70] and the obtuse triangles alike, the smallest
-  // angle 0.7-2.4 degrees higher in three meshes and 3.2-3.6 lower in two. Where a void
-  // will not close, the sweeps again from the start with every move checked.
+  if (sweeps <= 0) return *relax_in(packing, spacing, sweeps, rng, after_sweep, threads);
+  // The sweeps with only the conflict checks, the voids they opened closed, and two
+  // checked sweeps over the disks within two rest lengths of those closing moved, which smooth what
+  // it bent (the smallest angle of remesh's meshes at 10^4 vertices, elephant and eight, seeds
+  // 1-4: 31.6-33.4 degrees without them, 34.9-37.6 with). Until 2026-12-06 the last two of `sweeps`
+  // were the checked ones, over every disk; against that (remesh on four surfaces at 10^4 and
+  // 3·10^4 vertices, seeds 1-2) relaxation of the elephant at 10^4 took 0.34-0.37 -> 0.27-0.31 s on
+  // one core, the angles in [50, 70] and the obtuse triangles alike, the smallest angle 0.7-2.4
+  // degrees higher in three meshes and 3.2-3.6 lower in two. Where a void will not close, the
+  // sweeps again from the start with every move checked.
   constexpr int kSmoothing = 2;
   const SurfacePacking start = packing;
   const Rng start_rng = rng;
   std::vector<char> near_pulled;
-  const auto close = [&](std::size_t& moved, std::vector<DiskId>& pulled) {
-    if (!close_voids(packing, threads, moved, pulled)) return false;
+  const auto close = [&](std::size_t& moved,
+                         std::vector<DiskId>& pulled) -> std::optional<std::size_t> {
+    const std::optional<std::size_t> exchanged =
+        close_voids(packing, threads, rng, inject_from, moved, pulled);
+    if (!exchanged) return std::nullopt;
     std::sort(pulled.begin(), pulled.end());  // a disk may be pulled more than once
     pulled.erase(std::unique(pulled.begin(), pulled.end()), pulled.end());
     near_pulled.assign(packing.id_bound(), 0);
     const double reach = 2 * spacing * packing.max_radius();
-    for (const DiskId q : pulled)
-      packing.for_each_near(packing.center(q), reach, [&](DiskId id) { near_pulled[id] = 1; });
-    return true;
+    for (const DiskId q : pulled) {
+      if (packing.alive(q))  // not one ejected since
+        packing.for_each_near(packing.center(q), reach, [&](DiskId id) { near_pulled[id] = 1; });
+    }
+    return exchanged;
   };
   if (const auto moved = relax_in(packing, spacing, sweeps + kSmoothing, rng, after_sweep, threads,
                                   sweeps, close, &near_pulled))
