@@ -544,14 +544,15 @@ std::size_t detail::relax_at_end(SurfacePacking& packing, double spacing, int sw
   threads = detail::thread_count(threads);
   if (sweeps <= 0) return *relax_in(packing, spacing, sweeps, rng, after_sweep, threads);
   // The sweeps with only the conflict checks, the voids they opened closed, and two
-  // checked sweeps over the disks within two rest lengths of those closing moved, which smooth what
-  // it bent (the smallest angle of remesh's meshes at 10^4 vertices, elephant and eight, seeds
-  // 1-4: 31.6-33.4 degrees without them, 34.9-37.6 with). Until 2026-12-06 the last two of `sweeps`
-  // were the checked ones, over every disk; against that (remesh on four surfaces at 10^4 and
-  // 3·10^4 vertices, seeds 1-2) relaxation of the elephant at 10^4 took 0.34-0.37 -> 0.27-0.31 s on
-  // one core, the angles in [50, 70] and the obtuse triangles alike, the smallest angle 0.7-2.4
-  // degrees higher in three meshes and 3.2-3.6 lower in two. Where a void will not close, the
-  // sweeps again from the start with every move checked.
+  // checked sweeps over the disks within two rest lengths of those closing moved, which
+  // smooth what it bent (the smallest angle of remesh's meshes at 10^4 vertices, elephant
+  // and eight, seeds 1-4: 31.6-33.4 degrees without them, 34.9-37.6 with). Until
+  // 2026-12-06 the last two of `sweeps` were the checked ones, over every disk; against
+  // that (remesh on four surfaces at 10^4 and 3·10^4 vertices, seeds 1-2) relaxation of
+  // the elephant at 10^4 took 0.34-0.37 -> 0.27-0.31 s on one core, the angles in [50, 70]
+  // and the obtuse triangles alike, the smallest angle 0.7-2.4 degrees higher in three
+  // meshes and 3.2-3.6 lower in two. Where a void will not close, the sweeps again from
+  // the start with every move checked.
   constexpr int kSmoothing = 2;
   const SurfacePacking start = packing;
   const Rng start_rng = rng;
