@@ -129,14 +129,14 @@ std::vector<char> fixed_on_open_boundary(const SurfacePacking& packing) {
   const SurfaceDomain& domain = packing.domain();
   if (domain.is_closed()) return on;
   std::unordered_set<std::uint64_t> edges;
-  std::unordered_set<std::size_t> corners;
+  std::unordered_set<std::size_t> loop_vertices;
   const auto key = [](std::size_t a, std::size_t b) {
     return (static_cast<std::uint64_t>(std::min(a, b)) << 32) | std::max(a, b);
   };
   for (const std::vector<std::size_t>& loop : domain.boundary_loops()) {
     for (std::size_t i = 0; i < loop.size(); ++i) {
       edges.insert(key(loop[i], loop[(i + 1) % loop.size()]));
-      corners.insert(loop[i]);
+      loop_vertices.insert(loop[i]);
     }
   }
   const std::vector<Vec3>& v = domain.vertices();
@@ -148,7 +148,7 @@ std::vector<char> fixed_on_open_boundary(const SurfacePacking& packing) {
     for (int k = 0; k < 3 && !on[id]; ++k) {
       const std::size_t a = t[k], b = t[(k + 1) % 3];
       on[id] = (edges.count(key(a, b)) && distance_to_segment(c, v[a], v[b]) <= tol) ||
-               (corners.count(a) && norm(c - v[a]) <= tol);
+               (loop_vertices.count(a) && norm(c - v[a]) <= tol);
     }
   }
   return on;
@@ -333,7 +333,7 @@ std::optional<std::size_t> eject_beside(SurfacePacking& packing,
                                         const std::vector<DiskId>& injected, Rng& rng,
                                         std::vector<DiskId>& pulled) {
   const double r = packing.max_radius();
-  const auto free = [&](DiskId q) { return !(packing.flags(q) & (kFixed | kFrozen)); };
+  const auto movable = [&](DiskId q) { return !(packing.flags(q) & (kFixed | kFrozen)); };
   const auto eject = [&](DiskId q) {
     const Vec3 c = packing.center(q);
     if (attractor_eject(packing, q, rng, 1) != 1) return false;
@@ -345,7 +345,7 @@ std::optional<std::size_t> eject_beside(SurfacePacking& packing,
     const Vec3 c = packing.center(in);
     near.clear();
     packing.for_each_near(c, 6 * r, [&](DiskId q) {
-      if (q != in && free(q)) near.emplace_back(squared_norm(packing.center(q) - c), q);
+      if (q != in && movable(q)) near.emplace_back(squared_norm(packing.center(q) - c), q);
     });
     std::sort(near.begin(), near.end());
     bool done = false;
@@ -353,7 +353,7 @@ std::optional<std::size_t> eject_beside(SurfacePacking& packing,
       if (packing.alive(q) && (done = eject(q))) break;
     if (!done) {
       for (const DiskId q : packing.ids())
-        if (q != in && free(q) && (done = eject(q))) break;
+        if (q != in && movable(q) && (done = eject(q))) break;
     }
     if (!done) return std::nullopt;
   }
