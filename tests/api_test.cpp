@@ -155,6 +155,36 @@ TEST(Remesh, GivesExactlyTheVertexCountAsAConflictFreeMaximalPacking) {
   }
 }
 
+// remesh moves disks after its first mesh (the angle-opening passes, with edge flips
+// between their rounds): its mesh must still be the restricted Delaunay mesh of its
+// vertices, made anew from them here, and the vertices where its disks ended.
+TEST(Remesh, GivesTheRestrictedDelaunayMeshOfItsVertices) {
+  const auto elephant = test::surface_file("elephant.off");
+  for (const std::uint64_t seed : {1u, 2u}) {
+    RemeshOptions options;
+    options.seed = seed;
+    options.feature_angle = 0;
+    const RemeshResult result = remesh(elephant, 3000, options);
+    const SurfaceMesh again = restricted_delaunay(result.mesh.vertices, *elephant);
+    const auto sorted = [](std::vector<std::array<std::uint32_t, 3>> tris) {
+      for (auto& t : tris) std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+      std::sort(tris.begin(), tris.end());
+      return tris;
+    };
+    EXPECT_EQ(sorted(result.mesh.triangles), sorted(again.triangles)) << "seed " << seed;
+    // Each vertex on the input triangle its disk was last put on (the oracle's distance).
+    const oracle::SurfaceMeshInput surface = test::oracle_surface(*elephant);
+    ASSERT_EQ(result.input_triangles.size(), result.mesh.vertices.size());
+    for (std::size_t i = 0; i < result.mesh.vertices.size(); ++i) {
+      const oracle::SurfaceMeshInput one{surface.vertices,
+                                         {surface.triangles[result.input_triangles[i]]}};
+      const Vec3 v = result.mesh.vertices[i];
+      ASSERT_LE(oracle::distance_to_surface(one, {v.x, v.y, v.z}), 1e-9)
+          << "seed " << seed << ", vertex " << i;
+    }
+  }
+}
+
 // Sharp edges are kept by default (60 degrees, as the command line), none with angle 0:
 // on fandisk the mesh then has edges along its feature curves, and a mesh's vertices on
 // them lie on the input's sharp edges (checked by distance, apart from the library).

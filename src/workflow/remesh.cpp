@@ -13,6 +13,7 @@
 #include "../domain/thickness_limits.h"
 #include "../geometry/threads.h"
 #include "../io/number_text.h"
+#include "../mesh/delaunay_flips.h"
 #include "../sampling/surface_mps.h"
 #include "../tuning/surface_tune.h"
 #include "../voids/final_check.h"
@@ -52,6 +53,13 @@ class GradedSizing {
   double reach_ = 0;
   std::vector<double> limits_;
 };
+
+// The disks' centers, by vertex of their mesh (the i-th live disk is vertex i).
+std::vector<Vec3> centers(const SurfacePacking& packing) {
+  std::vector<Vec3> out;
+  for (const DiskId id : packing.ids()) out.push_back(packing.center(id));
+  return out;
+}
 
 bool keeps_topology(const SurfaceMeshCheck& check, const SurfaceDomain& surface) {
   return check.manifold && check.genus == surface.genus() && check.isolated_vertices == 0 &&
@@ -124,28 +132,35 @@ std::optional<RemeshResult> remesh_at(const std::shared_ptr<const SurfaceDomain>
   if (cancelled) throw Cancelled("remesh: cancelled by the progress callback during relaxation");
 
   // tune, relax and open_obtuse_angles keep the packing maximal
-  RestrictedDelaunayReuse reuse;  // the meshes after open_obtuse_angles redo only what moved
+  RestrictedDelaunayReuse reuse;  // the mesh after open_obtuse_angles redoes only what moved
   out.mesh = restricted_delaunay(packing, Coverage::maximal, options.threads, &reuse);
   // Relaxation leaves about one triangle in a hundred obtuse: open those angles, in three
   // passes over one mesh (a move can leave an angle nearby still obtuse, which the next
-  // pass sees at the disks' new places), then mesh again; twice. Measured at 10^4 and
-  // 3·10^4 vertices (2026-12-04), against one pass per mesh three times: obtuse
-  // triangles on the elephant 0.15 / 0.10 % -> 0.12 / 0.08 %, fandisk 0.93 / 0.58 % ->
-  // 0.85 / 0.52 %, with one restricted Delaunay mesh fewer. Then one pass opens the
-  // angles below kSharpAngle, which set the mesh's smallest angle: a handful of the
-  // 6·10^4 (elephant and eight at 10^4 vertices, seeds 1-4 and 1-3: smallest angles
-  // 33.1-37.9 degrees without it, 38.2-40.1 with, the other figures within noise).
+  // pass sees at the disks' new places), then one pass opens the angles below
+  // kSharpAngle, which set the mesh's smallest angle: a handful of the 6·10^4 (elephant
+  // and eight at 10^4 vertices, seeds 1-4 and 1-3: smallest angles 33.1-37.9 degrees
+  // without it, 38.2-40.1 with, the other figures within noise). Twice: against one pass
+  // per mesh three times (2026-12-04, 10^4 and 3·10^4 vertices), obtuse triangles on the
+  // elephant 0.15 / 0.10 % -> 0.12 / 0.08 %, fandisk 0.93 / 0.58 % -> 0.85 / 0.52 %.
+  // Between the two rounds the mesh's edges around the moved disks are flipped toward
+  // Delaunay, not meshed anew: the same figures within a triangle or two (four surfaces
+  // at 10^4, seeds 1-2), a restricted Delaunay mesh fewer (fandisk: 0.05 s of 0.65).
   // The last line of defence, for the sample, tune and every move since: the packing's
-  // check runs beside the last mesh where the packing is final before it and more than
-  // one thread is allowed (both only read it; the mesh's serial parts leave a core idle).
-  std::future<std::string> final_check;
+  // check runs beside the last mesh, where more than one thread is allowed (both only
+  // read the packing; the mesh's serial parts leave a core idle).
   constexpr int kRounds = 2;
+  bool moved_since_mesh = false;
   for (int round = 0; round < kRounds && options.relax_sweeps > 0; ++round) {
     std::size_t moved = 0;
     for (int pass = 0; pass < 3; ++pass) moved += open_obtuse_angles(packing, out.mesh);
     moved += open_sharp_angles(packing, out.mesh, kSharpAngle);
     if (moved == 0) break;
-    if (round + 1 == kRounds && detail::thread_count(options.threads) > 1) {
+    moved_since_mesh = true;
+    if (round + 1 < kRounds) detail::flip_toward_delaunay(out.mesh, centers(packing));
+  }
+  std::future<std::string> final_check;
+  if (moved_since_mesh) {
+    if (detail::thread_count(options.threads) > 1) {
       try {
         final_check =
             std::async(std::launch::async, [&packing] { return packing_defect(packing); });
