@@ -30,8 +30,9 @@ struct RemeshOptions {
   /// Relaxation sweeps after the count is reached (relax, surface_tuning.h): the disks
   /// move toward a hexagonal spacing while the packing stays conflict-free and maximal,
   /// which makes the triangles closer to equilateral; then the obtuse angles of the mesh
-  /// are opened (open_obtuse_angles, three passes) and the surface meshed again, twice.
-  /// 0: neither.
+  /// are opened (open_obtuse_angles, three passes) and its sharp ones (open_sharp_angles),
+  /// twice, with the mesh's edges flipped toward Delaunay between the rounds, and the
+  /// surface is meshed again. 0: neither.
   int relax_sweeps = 30;
   std::uint64_t seed = 1;
   /// Sharp edges to keep: where the surface has no features set (SurfaceDomain::

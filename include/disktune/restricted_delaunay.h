@@ -68,7 +68,7 @@ namespace detail {
 struct RestrictedDelaunayState;
 }
 /// What one mesh of a packing keeps for the next mesh of it once a few disks have moved
-/// (remesh meshes again after open_obtuse_angles): the Delaunay triangulation, in which
+/// (remesh meshes again after its angle-opening passes): the Delaunay triangulation, in which
 /// the moved centers are moved, and each facet's verdict, which holds while its two
 /// cells stand (they fix its dual edge). The next mesh is the same as a new one's.
 /// Where more than one disk in eight moved, or the count or the surface changed, the
