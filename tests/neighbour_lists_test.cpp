@@ -74,5 +74,41 @@ TEST(NeighbourLists, GiveExactlyTheDisksWithinReachAfterEveryMove) {
   }
 }
 
+// Lists made for some disks only (relaxation's sweeps after a closing, which move only
+// the disks near those the closing moved): while only those disks move, their lists
+// must stay exactly the disks within reach, whoever those are.
+TEST(NeighbourLists, ListsMadeForSomeDisksStayExactWhileOnlyTheyMove) {
+  const auto surface = test::surface_file("elephant.off");
+  const double r = 0.02, reach = 1.9 * r, slack = 0.3 * r;
+  Rng rng(5);
+  SurfacePacking p = sample_mps(surface, SurfaceSizing::constant(r), rng);
+  const std::vector<DiskId> ids = p.ids();
+  std::vector<DiskId> some;  // every fifth disk
+  for (std::size_t k = 0; k < ids.size(); k += 5) some.push_back(ids[k]);
+  detail::NeighbourLists lists(p.id_bound(), reach, slack);
+  lists.make(p, 2, &some);
+  std::mt19937_64 gen(5);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::size_t listed = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    const DiskId id = some[static_cast<std::size_t>(u(gen) * static_cast<double>(some.size()))];
+    const double length = (trial % 5 == 4 ? 3.0 : 0.2) * r * u(gen);
+    const Vec3 dir{u(gen) - 0.5, u(gen) - 0.5, u(gen) - 0.5};
+    p.move(id, test::nearest_surface_point(p, p.center(id) + dir * (length / norm(dir))));
+    lists.moved(p, id);
+    for (std::size_t k = trial % 7; k < some.size(); k += 7) {
+      const DiskId a = some[k];
+      const Vec3 c = p.center(a);
+      std::vector<DiskId> expected, got;
+      for (const DiskId q : ids)
+        if (q != a && squared_norm(p.center(q) - c) <= reach * reach) expected.push_back(q);
+      lists.for_each(p, a, c, [&](DiskId q, double) { got.push_back(q); });
+      ASSERT_EQ(got, expected) << "trial " << trial << ": the neighbours of disk " << a;
+      listed += got.size();
+    }
+  }
+  EXPECT_GT(listed, 10000u);
+}
+
 }  // namespace
 }  // namespace disktune

@@ -56,10 +56,12 @@ inline ColourBlocks colour_blocks(const SurfacePacking& packing, const std::vect
   std::vector<Cube> cubes;
   std::vector<std::uint32_t> size;
   std::vector<std::uint32_t> group(packing.id_bound());
+  std::vector<char> listed(packing.id_bound(), 0);  // in `order`: all live disks, or some
+  for (const DiskId p : order) listed[p] = 1;
   const auto index = [&](double v) { return SpaceGrid::cell_index(v, block); };
   std::uint32_t last = 0;
   for (DiskId p = 0; p < packing.id_bound(); ++p) {
-    if (!packing.alive(p)) continue;
+    if (!listed[p]) continue;
     const Vec3 c = packing.center(p) - origin;
     const Cube cube{index(c.x), index(c.y), index(c.z)};
     if (cubes.empty() || cube != cubes[last]) {

@@ -34,12 +34,16 @@ class NeighbourLists {
   /// How far from a disk the lists look, and so what relisting it reads and writes.
   double listed_reach() const { return reach_ + 3 * slack_; }
 
-  /// Makes every disk's list where none is made (at first, or after `forget`), on up to
-  /// `threads` threads.
-  void make(const SurfacePacking& packing, unsigned threads) {
+  /// Makes the lists where none are made (at first, or after `forget`), on up to
+  /// `threads` threads: of the disks `ids` names, where given, else of every disk. A disk
+  /// without a list must then stay where it is: the lists of those that move stay
+  /// complete (a disk that stays needs no relisting, and one that moves lists itself).
+  void make(const SurfacePacking& packing, unsigned threads,
+            const std::vector<DiskId>* ids = nullptr) {
     if (made_) return;
-    const std::vector<DiskId> ids = packing.ids();
-    parallel_for(ids.size(), threads, [&](std::size_t k, unsigned) { list(packing, ids[k]); });
+    const std::vector<DiskId> all = ids ? std::vector<DiskId>{} : packing.ids();
+    const std::vector<DiskId>& which = ids ? *ids : all;
+    parallel_for(which.size(), threads, [&](std::size_t k, unsigned) { list(packing, which[k]); });
     made_ = true;
   }
 
